@@ -1,0 +1,26 @@
+#pragma once
+/// @file
+/// How the `reconfig` tool's subcommands plug into main: each lives in its own
+/// `<name>_command.cpp` and registers itself with one `add_<name>_command` function.
+
+#include <CLI/CLI.hpp>
+
+namespace reconfig::cli {
+
+/// Exit codes scripts rely on (FORMATS.md).
+enum ExitCode : int {
+  kExitOk = 0,          ///< success; for `check`: collision-free
+  kExitCollisions = 1,  ///< `check` found collisions
+  kExitBadInput = 2,    ///< bad input: missing file, malformed data, bad arguments
+};
+
+/// Registers a subcommand on `app`. Its callback runs the command and stores the process
+/// exit code in `exit_code`; a bad-input failure is thrown as `reconfig::InputError` and
+/// turned into a one-line message and exit code 2 by main.
+using CommandRegistrar = void (*)(CLI::App& app, int& exit_code);
+
+void add_info_command(CLI::App& app, int& exit_code);
+void add_check_command(CLI::App& app, int& exit_code);
+void add_pose_command(CLI::App& app, int& exit_code);
+
+}  // namespace reconfig::cli

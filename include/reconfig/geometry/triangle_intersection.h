@@ -1,0 +1,31 @@
+#pragma once
+/// @file
+/// Exact static triangle–triangle intersection.
+
+#include <Eigen/Core>
+#include <vector>
+
+namespace reconfig::geometry {
+
+/// The points two triangles share.
+struct TriangleContact {
+  bool intersect = false;  ///< the closed triangles share at least one point (exact)
+  bool coplanar = false;   ///< both lie in one plane (exact); `points` is then a polygon
+  /// What they share: nothing (no contact), one point (touching at a point), the two ends of
+  /// the intersection segment, or (coplanar) the vertices of the convex overlap polygon
+  /// (up to 6). Coordinates are rounded to double; the decision `intersect` is exact.
+  std::vector<Eigen::Vector3d> points;
+};
+
+/// Whether two closed triangles share a point, decided exactly (filtered exact predicates:
+/// never fooled by rounding), including coplanar, touching and degenerate triangles
+/// (a degenerate triangle is treated as the segment or point it collapses to).
+bool triangles_intersect(const Eigen::Vector3d& a0, const Eigen::Vector3d& a1, const Eigen::Vector3d& a2,
+                         const Eigen::Vector3d& b0, const Eigen::Vector3d& b1, const Eigen::Vector3d& b2);
+
+/// Same decision as `triangles_intersect`, plus the shared points.
+TriangleContact intersect_triangles(const Eigen::Vector3d& a0, const Eigen::Vector3d& a1,
+                                    const Eigen::Vector3d& a2, const Eigen::Vector3d& b0,
+                                    const Eigen::Vector3d& b1, const Eigen::Vector3d& b2);
+
+}  // namespace reconfig::geometry
