@@ -1,0 +1,45 @@
+#pragma once
+/// @file
+/// The edit commands a designer performs (each undoable, each reporting its dirty ranges).
+
+#include <memory>
+#include <string>
+
+#include "reconfig/geometry/mesh.h"
+#include "reconfig/motion/bezier_translation_track.h"
+#include "reconfig/motion/pose.h"
+#include "reconfig/motion/slerp_rotation_track.h"
+#include "reconfig/scene/command.h"
+
+namespace reconfig::scene {
+
+/// Which key list of a keyframed track an edit addresses.
+enum class KeyKind { kTranslation, kRotation };
+
+/// Replaces translation key `key` of `part`'s track in `transition` (time, point, handles).
+/// Editing the first or last key of a track is refused: those follow the state poses (edit
+/// the state instead).
+std::unique_ptr<Command> set_translation_key(std::string transition, std::string part, int key,
+                                             motion::TranslationKey value);
+
+/// Replaces rotation key `key` (time, quaternion); same rules.
+std::unique_ptr<Command> set_rotation_key(std::string transition, std::string part, int key,
+                                          motion::RotationKey value);
+
+/// Inserts a key at time t whose value is the current motion at t, so the motion keeps its
+/// shape as far as the key type allows (a Bézier key is inserted by de Casteljau subdivision,
+/// leaving the curve unchanged; a rotation key on the slerp arc). Creates the track (with
+/// keys at the state poses) if the part had none.
+std::unique_ptr<Command> insert_key(std::string transition, std::string part, KeyKind kind, double t);
+
+/// Removes an inner key (not the first or last).
+std::unique_ptr<Command> remove_key(std::string transition, std::string part, KeyKind kind, int key);
+
+/// Sets `part`'s pose in `state`, and moves the end keys of every transition touching that
+/// state with it (translation handles shift by the same offset), so the design stays valid.
+std::unique_ptr<Command> set_state_pose(std::string state, std::string part, motion::Pose pose);
+
+/// Replaces a part's rest geometry; its pivot `center` is kept so poses keep their meaning.
+std::unique_ptr<Command> replace_part_mesh(std::string part, geometry::Mesh mesh);
+
+}  // namespace reconfig::scene

@@ -1,0 +1,31 @@
+#pragma once
+/// @file
+/// Reading and writing the "reconfig-scene" JSON format (docs/file-formats.md).
+
+#include <filesystem>
+#include <string>
+
+#include "reconfig/scene/reconfigurable.h"
+
+namespace reconfig::scene {
+
+/// Loads a scene file and the meshes it references (relative to the file), builds primitive
+/// parts, computes centers of mass and validates the whole design (validate_scene.h).
+/// @throws InputError naming the file and the JSON path of the first problem
+Reconfigurable load_scene(const std::filesystem::path& file);
+
+/// Parses scene JSON text. Mesh paths are resolved against `base_dir`; errors name `file_label`.
+/// @throws InputError
+Reconfigurable parse_scene(const std::string& json_text, const std::filesystem::path& base_dir,
+                           const std::string& file_label);
+
+/// The scene as JSON text (2-space indented). Mesh paths are written relative to `base_dir`.
+std::string scene_to_json(const Reconfigurable& scene, const std::filesystem::path& base_dir);
+
+/// Writes the scene atomically (temporary file, then rename): a crash never leaves a half
+/// file. Parts whose geometry was edited in the tool (`EditedMesh`) are written as OBJ files
+/// under `meshes/` next to the scene and become `MeshFile` parts.
+/// @throws InputError if the file cannot be written
+void save_scene(Reconfigurable& scene, const std::filesystem::path& file);
+
+}  // namespace reconfig::scene

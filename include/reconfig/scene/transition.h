@@ -1,0 +1,21 @@
+#pragma once
+/// @file
+/// A transition between two states: an edge of the state graph, choreographed on [0, 1].
+
+#include <map>
+#include <string>
+
+#include "reconfig/scene/track.h"
+
+namespace reconfig::scene {
+
+struct Transition {
+  std::string name;
+  std::string from, to;     ///< state names
+  bool bidirectional = true;  ///< can be played backwards
+  /// Motion of each animated part by part name. A part without a track holds its pose (and
+  /// has the same pose in both states).
+  std::map<std::string, Track> tracks;
+};
+
+}  // namespace reconfig::scene

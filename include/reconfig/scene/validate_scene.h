@@ -1,0 +1,27 @@
+#pragma once
+/// @file
+/// Consistency rules of a design that the JSON grammar alone cannot express.
+
+#include <string>
+
+#include "reconfig/scene/reconfigurable.h"
+
+namespace reconfig::scene {
+
+/// Tolerances for "this key pose equals that state pose".
+struct PoseTolerance {
+  double translation = 1e-6;  ///< in scene units
+  double rotation = 1e-4;     ///< radians
+};
+
+/// Checks names are unique and non-empty, states and tracks name existing parts, transitions
+/// name existing states, every key time lies in [0, 1] and increases strictly, every
+/// quaternion is unit, every number finite, each track's first and last keys equal the poses
+/// of the transition's end states, and a part without a track has the same pose in both.
+/// @throws InputError with the JSON path of the first problem (file left empty)
+void validate_scene(const Reconfigurable& scene, const PoseTolerance& tolerance = {});
+
+/// Whether two poses place a part identically within the tolerance.
+bool poses_match(const motion::Pose& a, const motion::Pose& b, const PoseTolerance& tolerance = {});
+
+}  // namespace reconfig::scene

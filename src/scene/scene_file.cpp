@@ -1,0 +1,341 @@
+#include "reconfig/scene/scene_file.h"
+
+#include <fmt/format.h>
+
+#include <cctype>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "reconfig/common/input_error.h"
+#include "reconfig/geometry/load_mesh.h"
+#include "reconfig/geometry/mesh_check.h"
+#include "reconfig/geometry/save_mesh.h"
+#include "reconfig/scene/validate_scene.h"
+#include "scene/detail/json_cursor.h"
+
+namespace reconfig::scene {
+namespace fs = std::filesystem;
+using detail::JsonCursor;
+using nlohmann::ordered_json;
+
+namespace {
+
+constexpr const char* kFormat = "reconfig-scene";
+constexpr int kVersion = 1;
+
+motion::Pose read_pose(const JsonCursor& c) {
+  c.expect_object({"translation", "rotation"});
+  motion::Pose pose;
+  if (c.has("translation")) pose.translation = c["translation"].as_vector3();
+  if (c.has("rotation")) pose.rotation = c["rotation"].as_unit_quaternion();
+  return pose;
+}
+
+/// Loads each distinct mesh file once, even when several parts share it.
+class MeshCache {
+ public:
+  const geometry::Mesh& get(const fs::path& path, const JsonCursor& where) {
+    auto it = meshes_.find(path);
+    if (it != meshes_.end()) return it->second;
+    try {
+      return meshes_.emplace(path, geometry::load_mesh(path)).first->second;
+    } catch (const InputError& error) {
+      where.fail(error.what());
+    }
+  }
+
+ private:
+  std::map<fs::path, geometry::Mesh> meshes_;
+};
+
+Part read_part(const JsonCursor& c, const fs::path& base_dir, MeshCache& meshes) {
+  c.expect_object({"name", "mesh", "box", "cylinder", "sphere", "color", "center"});
+  Part part;
+  part.name = c["name"].as_name();
+  int sources = 0;
+  for (const char* key : {"mesh", "box", "cylinder", "sphere"}) sources += c.has(key) ? 1 : 0;
+  if (sources != 1) c.fail("a part needs exactly one of \"mesh\", \"box\", \"cylinder\", \"sphere\"");
+  if (c.has("mesh")) {
+    const JsonCursor mesh = c["mesh"];
+    const fs::path path = (base_dir / mesh.as_string()).lexically_normal();
+    part.source = MeshFile{path};
+    part.mesh = meshes.get(path, mesh);
+    geometry::MeshCheckOptions quick;
+    quick.check_self_intersections = false;
+    const geometry::MeshReport report = geometry::check_mesh(part.mesh, quick);
+    if (!report.is_manifold() || report.non_finite_vertices.any() || report.out_of_range_faces.any())
+      mesh.fail("unusable mesh: " + report.summary());
+  } else {
+    if (c.has("box")) {
+      const JsonCursor box = c["box"];
+      box.expect_object({"size"});
+      const Eigen::Vector3d size = box["size"].as_vector3();
+      if ((size.array() <= 0).any()) box["size"].fail("box sizes must be positive");
+      part.source = BoxPrimitive{size};
+    } else if (c.has("cylinder")) {
+      const JsonCursor cylinder = c["cylinder"];
+      cylinder.expect_object({"radius", "height"});
+      part.source = CylinderPrimitive{cylinder["radius"].as_positive(), cylinder["height"].as_positive()};
+    } else {
+      const JsonCursor sphere = c["sphere"];
+      sphere.expect_object({"radius"});
+      part.source = SpherePrimitive{sphere["radius"].as_positive()};
+    }
+    part.mesh = Part::primitive_mesh(part.source);
+  }
+  if (c.has("color")) {
+    const Eigen::Vector3d color = c["color"].as_vector3();
+    if ((color.array() < 0).any() || (color.array() > 1).any()) c["color"].fail("color components must lie in [0, 1]");
+    part.color = color;
+  }
+  part.center = c.has("center") ? c["center"].as_vector3() : part_center(part.mesh);
+  return part;
+}
+
+State read_state(const JsonCursor& c) {
+  c.expect_object({"name", "poses"});
+  State state;
+  state.name = c["name"].as_name();
+  if (c.has("poses")) {
+    const JsonCursor poses = c["poses"];
+    if (!poses.value().is_object()) poses.fail("expected an object mapping part names to poses");
+    for (const auto& item : poses.value().items()) state.poses.emplace(item.key(), read_pose(poses[item.key()]));
+  }
+  return state;
+}
+
+motion::TranslationKey read_translation_key(const JsonCursor& c) {
+  c.expect_object({"time", "point", "in", "out"});
+  motion::TranslationKey key;
+  key.time = c["time"].as_number();
+  key.point = c["point"].as_vector3();
+  key.in = c.has("in") ? c["in"].as_vector3() : key.point;
+  key.out = c.has("out") ? c["out"].as_vector3() : key.point;
+  return key;
+}
+
+motion::RotationKey read_rotation_key(const JsonCursor& c) {
+  c.expect_object({"time", "quaternion"});
+  return {c["time"].as_number(), c["quaternion"].as_unit_quaternion()};
+}
+
+Track read_track(const JsonCursor& c) {
+  const std::string interpolation = c.has("interpolation") ? c["interpolation"].as_string() : "bezier";
+  if (interpolation == "screw") {
+    c.expect_object({"interpolation", "poses"});
+    ScrewPosesTrack track;
+    const JsonCursor poses = c["poses"];
+    const std::size_t n = poses.expect_array();
+    if (n == 0) poses.fail("a screw track needs at least one key pose");
+    for (std::size_t i = 0; i < n; ++i) {
+      const JsonCursor key = poses[i];
+      key.expect_object({"time", "translation", "rotation"});
+      motion::Pose pose;
+      if (key.has("translation")) pose.translation = key["translation"].as_vector3();
+      if (key.has("rotation")) pose.rotation = key["rotation"].as_unit_quaternion();
+      track.poses.push_back({key["time"].as_number(), pose});
+    }
+    return track;
+  }
+  if (interpolation != "bezier")
+    c["interpolation"].fail(fmt::format("unknown interpolation \"{}\" (expected \"bezier\" or \"screw\")", interpolation));
+  c.expect_object({"interpolation", "translation", "rotation"});
+  KeyframedTrack track;
+  if (c.has("translation")) {
+    const JsonCursor keys = c["translation"];
+    const std::size_t n = keys.expect_array();
+    if (n == 0) keys.fail("give at least one key, or leave the list out");
+    for (std::size_t i = 0; i < n; ++i) track.translation.push_back(read_translation_key(keys[i]));
+  }
+  if (c.has("rotation")) {
+    const JsonCursor keys = c["rotation"];
+    const std::size_t n = keys.expect_array();
+    if (n == 0) keys.fail("give at least one key, or leave the list out");
+    for (std::size_t i = 0; i < n; ++i) track.rotation.push_back(read_rotation_key(keys[i]));
+  }
+  return track;
+}
+
+Transition read_transition(const JsonCursor& c) {
+  c.expect_object({"name", "from", "to", "bidirectional", "tracks"});
+  Transition transition;
+  transition.name = c["name"].as_name();
+  transition.from = c["from"].as_name();
+  transition.to = c["to"].as_name();
+  if (c.has("bidirectional")) transition.bidirectional = c["bidirectional"].as_bool();
+  if (c.has("tracks")) {
+    const JsonCursor tracks = c["tracks"];
+    if (!tracks.value().is_object()) tracks.fail("expected an object mapping part names to tracks");
+    for (const auto& item : tracks.value().items())
+      transition.tracks.emplace(item.key(), read_track(tracks[item.key()]));
+  }
+  return transition;
+}
+
+Reconfigurable read_scene(const JsonCursor& root, const fs::path& base_dir) {
+  root.expect_object({"format", "version", "units", "parts", "states", "transitions"});
+  if (root["format"].as_string() != kFormat)
+    root["format"].fail(fmt::format("expected \"{}\"", kFormat));
+  const JsonCursor version = root["version"];
+  if (!version.value().is_number_integer() || version.value().get<int>() != kVersion)
+    version.fail(fmt::format("unsupported version {} (this build reads version {})", version.value().dump(), kVersion));
+  Reconfigurable scene;
+  if (root.has("units")) scene.units = root["units"].as_name();
+  MeshCache meshes;
+  const JsonCursor parts = root["parts"];
+  for (std::size_t i = 0, n = parts.expect_array(); i < n; ++i) scene.parts.push_back(read_part(parts[i], base_dir, meshes));
+  const JsonCursor states = root["states"];
+  for (std::size_t i = 0, n = states.expect_array(); i < n; ++i) scene.states.push_back(read_state(states[i]));
+  if (root.has("transitions")) {
+    const JsonCursor transitions = root["transitions"];
+    for (std::size_t i = 0, n = transitions.expect_array(); i < n; ++i)
+      scene.transitions.push_back(read_transition(transitions[i]));
+  }
+  validate_scene(scene);
+  return scene;
+}
+
+ordered_json vector_json(const Eigen::Vector3d& v) { return ordered_json::array({v.x(), v.y(), v.z()}); }
+ordered_json quaternion_json(const Eigen::Quaterniond& q) { return ordered_json::array({q.w(), q.x(), q.y(), q.z()}); }
+
+ordered_json pose_json(const motion::Pose& pose) {
+  return {{"translation", vector_json(pose.translation)}, {"rotation", quaternion_json(pose.rotation)}};
+}
+
+ordered_json part_json(const Part& part, const fs::path& base_dir) {
+  ordered_json j;
+  j["name"] = part.name;
+  if (const auto* file = std::get_if<MeshFile>(&part.source)) {
+    j["mesh"] = file->path.lexically_proximate(base_dir).generic_string();
+  } else if (const auto* box = std::get_if<BoxPrimitive>(&part.source)) {
+    j["box"] = {{"size", vector_json(box->size)}};
+  } else if (const auto* cylinder = std::get_if<CylinderPrimitive>(&part.source)) {
+    j["cylinder"] = {{"radius", cylinder->radius}, {"height", cylinder->height}};
+  } else if (const auto* sphere = std::get_if<SpherePrimitive>(&part.source)) {
+    j["sphere"] = {{"radius", sphere->radius}};
+  } else {
+    throw InputError("", "part " + part.name, "edited geometry must be written to a file before saving (use save_scene)");
+  }
+  if (part.color) j["color"] = vector_json(*part.color);
+  if (part.center != part_center(part.mesh)) j["center"] = vector_json(part.center);
+  return j;
+}
+
+ordered_json track_json(const Track& track) {
+  ordered_json j;
+  if (const auto* screw = std::get_if<ScrewPosesTrack>(&track)) {
+    j["interpolation"] = "screw";
+    ordered_json poses = ordered_json::array();
+    for (const motion::ScrewKey& key : screw->poses) {
+      ordered_json p = {{"time", key.time}};
+      p.update(pose_json(key.pose));
+      poses.push_back(p);
+    }
+    j["poses"] = poses;
+    return j;
+  }
+  const auto& keyed = std::get<KeyframedTrack>(track);
+  if (!keyed.translation.empty()) {
+    ordered_json keys = ordered_json::array();
+    for (const motion::TranslationKey& key : keyed.translation)
+      keys.push_back({{"time", key.time}, {"point", vector_json(key.point)}, {"in", vector_json(key.in)},
+                      {"out", vector_json(key.out)}});
+    j["translation"] = keys;
+  }
+  if (!keyed.rotation.empty()) {
+    ordered_json keys = ordered_json::array();
+    for (const motion::RotationKey& key : keyed.rotation)
+      keys.push_back({{"time", key.time}, {"quaternion", quaternion_json(key.rotation)}});
+    j["rotation"] = keys;
+  }
+  return j;
+}
+
+void write_atomically(const fs::path& file, const std::string& text) {
+  const fs::path temporary = file.string() + ".tmp";
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    out << text;
+    out.flush();
+    if (!out) throw InputError(file.string(), "", "could not write the file");
+  }
+  std::error_code error;
+  fs::rename(temporary, file, error);
+  if (error) {
+    fs::remove(temporary, error);
+    throw InputError(file.string(), "", "could not replace the file: " + error.message());
+  }
+}
+
+}  // namespace
+
+Reconfigurable parse_scene(const std::string& json_text, const fs::path& base_dir, const std::string& file_label) {
+  nlohmann::json document;
+  try {
+    document = nlohmann::json::parse(json_text);
+  } catch (const nlohmann::json::parse_error& error) {
+    // nlohmann's message reads "[json.exception.parse_error.101] parse error at line 3, column 5: ..."
+    std::string message = error.what();
+    const auto at = message.find("] ");
+    if (at != std::string::npos) message = message.substr(at + 2);
+    throw InputError(file_label, "", "malformed JSON: " + message);
+  }
+  try {
+    return read_scene(JsonCursor(document, ""), base_dir);
+  } catch (const InputError& error) {
+    throw error.in_file(file_label);
+  }
+}
+
+Reconfigurable load_scene(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw InputError(file.string(), "", fs::exists(file) ? "cannot read the file" : "file not found");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parse_scene(text.str(), fs::absolute(file).parent_path(), file.string());
+}
+
+std::string scene_to_json(const Reconfigurable& scene, const fs::path& base_dir) {
+  ordered_json root;
+  root["format"] = kFormat;
+  root["version"] = kVersion;
+  root["units"] = scene.units;
+  root["parts"] = ordered_json::array();
+  for (const Part& part : scene.parts) root["parts"].push_back(part_json(part, base_dir));
+  root["states"] = ordered_json::array();
+  for (const State& state : scene.states) {
+    ordered_json poses = ordered_json::object();
+    for (const auto& [name, pose] : state.poses) poses[name] = pose_json(pose);
+    root["states"].push_back({{"name", state.name}, {"poses", poses}});
+  }
+  root["transitions"] = ordered_json::array();
+  for (const Transition& transition : scene.transitions) {
+    ordered_json tracks = ordered_json::object();
+    for (const auto& [name, track] : transition.tracks) tracks[name] = track_json(track);
+    root["transitions"].push_back({{"name", transition.name},
+                                   {"from", transition.from},
+                                   {"to", transition.to},
+                                   {"bidirectional", transition.bidirectional},
+                                   {"tracks", tracks}});
+  }
+  return root.dump(2) + "\n";
+}
+
+void save_scene(Reconfigurable& scene, const fs::path& file) {
+  const fs::path base_dir = fs::absolute(file).parent_path();
+  for (Part& part : scene.parts) {
+    if (!std::holds_alternative<EditedMesh>(part.source)) continue;
+    std::string stem = part.name;
+    for (char& ch : stem)
+      if (!std::isalnum(static_cast<unsigned char>(ch)) && ch != '-' && ch != '_') ch = '_';
+    const fs::path mesh_file = base_dir / "meshes" / (stem + ".obj");
+    fs::create_directories(mesh_file.parent_path());
+    geometry::save_obj(mesh_file, part.mesh);
+    part.source = MeshFile{mesh_file};
+  }
+  write_atomically(file, scene_to_json(scene, base_dir));
+}
+
+}  // namespace reconfig::scene
