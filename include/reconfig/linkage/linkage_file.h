@@ -1,0 +1,36 @@
+#pragma once
+/// @file
+/// Reading and writing "reconfig-linkage" version 1 files (FORMATS.md), with validation.
+
+#include <filesystem>
+#include <string>
+
+#include "reconfig/linkage/linkage.h"
+
+namespace reconfig::linkage {
+
+/// Parses and validates a linkage from JSON text.
+///
+/// Checks: format and version; every joint has a unique non-empty name and a finite
+/// position [x, y]; every link lists two or more distinct known joints at distinct
+/// positions; every joint that is not fixed lies on a link; the motor's center is fixed,
+/// its joint is not, and a link (the crank) carries both; tracking points name known joints.
+/// It does not check that the linkage is fully constrained (see order_joints).
+/// @param text  the JSON document
+/// @param file  the file name used in error messages (may be empty)
+/// @throws reconfig::InputError naming the JSON path, e.g. `links[2][1]: unknown joint "Q"`
+Linkage parse_linkage(const std::string& text, const std::string& file = "");
+
+/// Reads, parses and validates a linkage file, and checks that it is fully constrained and
+/// not singular in its initial configuration (order_joints + SymbolicKinematics).
+/// @throws reconfig::InputError naming the file and the JSON path
+Linkage read_linkage(const std::filesystem::path& path);
+
+/// The linkage as "reconfig-linkage" version 1 JSON text (pretty-printed). Round-trips
+/// through parse_linkage exactly (positions are printed with 17 significant digits).
+std::string linkage_to_json(const Linkage& linkage);
+
+/// Writes linkage_to_json to `path`. @throws reconfig::InputError if it cannot be written
+void write_linkage(const Linkage& linkage, const std::filesystem::path& path);
+
+}  // namespace reconfig::linkage
