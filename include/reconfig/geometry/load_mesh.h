@@ -1,0 +1,48 @@
+#pragma once
+/// @file
+/// Reading triangle meshes from files (OBJ, STL, PLY, OFF, glTF/GLB and whatever else Assimp reads).
+
+#include <filesystem>
+#include <string>
+
+#include "reconfig/geometry/mesh.h"
+
+namespace reconfig::geometry {
+
+/// Reads the triangle mesh in `path`: OFF with our own reader, every other format with Assimp.
+///
+/// Polygons are triangulated; every mesh of a multi-mesh scene is placed by its node transforms
+/// (a mirroring transform flips the faces so they stay outward) and all are merged into one
+/// mesh. Vertices at exactly the same position are welded into one, whatever their normals or
+/// texture coordinates, so a closed part stays closed even from formats that store one vertex
+/// per face corner (STL, OBJ with normals). Points and lines are ignored. Faces are kept as they
+/// are, degenerate or not: `check_mesh` reports them.
+///
+/// Vertices no face uses are dropped; the others keep their file order where the format has
+/// shared vertices (OFF), and come in order of first use by the faces otherwise (Assimp's
+/// importers store one vertex per face corner).
+///
+/// Precision: OFF coordinates are read exactly as doubles. Assimp reads coordinates in single
+/// precision: for every other format a loaded coordinate is the `float` nearest to the file's.
+///
+/// Why OFF is ours: Assimp 5.2's OFF importer silently drops polygons with more than nine
+/// corners and clamps out-of-range or negative indices. Ours reports them (location
+/// `line <n>, face <i>`), ignores per-vertex and per-face colors, and triangulates concave
+/// polygons by ear clipping.
+///
+/// @param path  the file; the format is chosen from its extension, then its content
+/// @return the mesh (#V×3 positions, #F×3 triangles with indices in [0, #V))
+/// @throws InputError naming `path` if the file is missing or unreadable, the format is unknown
+///   or malformed (Assimp's message), there are no triangles, a face refers to a vertex that
+///   does not exist (`face <i>`), or a coordinate is NaN or infinite (`vertex <i>`).
+Mesh load_mesh(const std::filesystem::path& path);
+
+/// Same as `load_mesh`, from the bytes of a file held in memory (formats whose data is spread
+/// over several files, such as glTF with an external .bin, need `load_mesh`).
+///
+/// @param bytes           the file's content
+/// @param extension_hint  the file's extension, with or without the dot ("obj", ".stl", "glb")
+/// @throws InputError (with an empty file name) as `load_mesh`
+Mesh load_mesh_from_memory(const std::string& bytes, const std::string& extension_hint);
+
+}  // namespace reconfig::geometry

@@ -1,0 +1,33 @@
+#pragma once
+/// @file
+/// Writing triangle meshes to OBJ and STL files.
+///
+/// Both writers are atomic: they write `<path>.tmp` and rename it over `path` once it is
+/// complete, so a reader never sees a half-written file and a failed write leaves the old
+/// file in place.
+
+#include <filesystem>
+
+#include "reconfig/geometry/mesh.h"
+
+namespace reconfig::geometry {
+
+/// Writes `mesh` as a Wavefront OBJ (`v x y z` with 17 significant digits, `f a b c` 1-based):
+/// positions round-trip exactly through a double-precision reader.
+/// @param path  the file to write (replaced if it exists)
+/// @param mesh  #V×3 positions, #F×3 triangles
+/// @throws InputError naming `path` if the file cannot be written
+void save_obj(const std::filesystem::path& path, const Mesh& mesh);
+
+/// Writes `mesh` as an STL, binary (little-endian, 80-byte header) or ASCII ("solid reconfig").
+/// STL stores one triangle after another with single-precision coordinates and no shared
+/// vertices: loading it back welds equal positions, so vertex order and index numbering change,
+/// and positions are rounded to `float`. Each facet's normal is the unit normal of the
+/// triangle (zero for a degenerate one).
+/// @param path    the file to write (replaced if it exists)
+/// @param mesh    #V×3 positions, #F×3 triangles
+/// @param binary  binary STL if true, ASCII otherwise
+/// @throws InputError naming `path` if the file cannot be written
+void save_stl(const std::filesystem::path& path, const Mesh& mesh, bool binary = true);
+
+}  // namespace reconfig::geometry

@@ -1,0 +1,115 @@
+#include "reconfig/geometry/save_mesh.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <random>
+
+#include "mesh_test_helpers.h"
+#include "reconfig/common/input_error.h"
+#include "reconfig/geometry/load_mesh.h"
+#include "reconfig/geometry/primitives.h"
+#include "support/test_data.h"
+
+namespace reconfig::geometry {
+namespace {
+
+namespace fs = std::filesystem;
+using reconfig::testing::fresh_temp_dir;
+using testing::canonical;
+using testing::read_bytes;
+using testing::rounded_to_float;
+using testing::same_mesh;
+
+/// A sphere, turned and moved to arbitrary (not float-representable) coordinates.
+Mesh rotated_sphere(unsigned seed) {
+  Mesh mesh = make_sphere(0.37, 2);
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-100, 100);
+  Eigen::Quaterniond q(u(rng), u(rng), u(rng), u(rng));
+  q.normalize();
+  const Eigen::Vector3d t(u(rng), u(rng), u(rng));
+  for (int v = 0; v < mesh.vertex_count(); ++v) mesh.V.row(v) = (q * Eigen::Vector3d(mesh.V.row(v)) + t).transpose();
+  return mesh;
+}
+
+TEST(SaveMesh, ObjRoundTripsKeepingFaceOrderAndCorners) {
+  const fs::path path = fresh_temp_dir() / "sphere.obj";
+  const Mesh mesh = rounded_to_float(rotated_sphere(1));  // Assimp reads floats
+  save_obj(path, mesh);
+  const Mesh back = load_mesh(path);
+  ASSERT_EQ(back.vertex_count(), mesh.vertex_count());
+  ASSERT_EQ(back.face_count(), mesh.face_count());
+  // Vertices are renumbered by first use, but every face keeps its corners in order.
+  for (int f = 0; f < mesh.face_count(); ++f)
+    for (int k = 0; k < 3; ++k) ASSERT_EQ(back.V.row(back.F(f, k)), mesh.V.row(mesh.F(f, k))) << f << " " << k;
+  EXPECT_TRUE(same_mesh(back, mesh));
+}
+
+TEST(SaveMesh, ObjWritesSeventeenDigits) {
+  const fs::path path = fresh_temp_dir() / "tri.obj";
+  Mesh tri;
+  tri.V.resize(3, 3);
+  tri.V << 0.1, 1.0 / 3, -2e-300, 1, 0, 0, 0, 1, 0;
+  tri.F.resize(1, 3);
+  tri.F << 0, 1, 2;
+  save_obj(path, tri);
+  const std::string text = read_bytes(path.string());
+  EXPECT_NE(text.find("v 0.10000000000000001 0.33333333333333331 -2.0000000000000001e-300\n"), std::string::npos)
+      << text;
+  EXPECT_NE(text.find("f 1 2 3\n"), std::string::npos);
+}
+
+TEST(SaveMesh, StlRoundTripsUpToVertexOrderAndFloatRounding) {
+  const fs::path dir = fresh_temp_dir();
+  for (unsigned seed = 0; seed < 5; ++seed) {
+    const Mesh mesh = rotated_sphere(seed);
+    for (bool binary : {true, false}) {
+      SCOPED_TRACE(binary ? "binary" : "ascii");
+      const fs::path path = dir / (binary ? "b.stl" : "a.stl");
+      save_stl(path, mesh, binary);
+      const Mesh back = load_mesh(path);
+      EXPECT_TRUE(same_mesh(back, rounded_to_float(mesh)));
+    }
+  }
+  // Binary layout: 80-byte header, count, 50 bytes per triangle.
+  save_stl(dir / "b.stl", make_box({1, 1, 1}), true);
+  EXPECT_EQ(fs::file_size(dir / "b.stl"), 84u + 12u * 50u);
+  EXPECT_EQ(read_bytes((dir / "a.stl").string()).rfind("solid reconfig\n", 0), 0u);
+}
+
+TEST(SaveMesh, WritesAtomicallyAndReplacesTheOldFile) {
+  const fs::path dir = fresh_temp_dir();
+  save_obj(dir / "part.obj", make_box({1, 1, 1}));
+  save_obj(dir / "part.obj", make_box({2, 2, 2}));
+  EXPECT_FALSE(fs::exists(dir / "part.obj.tmp"));
+  EXPECT_DOUBLE_EQ(load_mesh(dir / "part.obj").V.maxCoeff(), 1.0);
+  save_stl(dir / "part.stl", make_box({1, 1, 1}));
+  EXPECT_FALSE(fs::exists(dir / "part.stl.tmp"));
+}
+
+TEST(SaveMesh, UnwritablePathIsAnInputErrorAndLeavesNothingBehind) {
+  const fs::path dir = fresh_temp_dir();
+  EXPECT_THROW(save_obj(dir / "no" / "such" / "folder.obj", make_box({1, 1, 1})), InputError);
+  // Renaming onto a folder fails: the old folder stays, the temporary file is removed.
+  fs::create_directories(dir / "taken.stl" / "inside");
+  EXPECT_THROW(save_stl(dir / "taken.stl", make_box({1, 1, 1})), InputError);
+  EXPECT_FALSE(fs::exists(dir / "taken.stl.tmp"));
+  EXPECT_TRUE(fs::is_directory(dir / "taken.stl"));
+}
+
+TEST(SaveMesh, RefusesOutOfRangeIndices) {
+  Mesh box = make_box({1, 1, 1});
+  box.F(3, 2) = 99;
+  const fs::path path = fresh_temp_dir() / "bad.obj";
+  try {
+    save_obj(path, box);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.location(), "face 3");
+  }
+  EXPECT_FALSE(fs::exists(path));
+}
+
+}  // namespace
+}  // namespace reconfig::geometry
