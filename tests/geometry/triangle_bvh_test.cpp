@@ -1,0 +1,182 @@
+#include "reconfig/geometry/triangle_bvh.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+#include <utility>
+#include <vector>
+
+#include "exact_kernels_test_util.h"
+
+namespace reconfig::geometry {
+namespace {
+
+using Eigen::AlignedBox3d;
+using Eigen::Vector3d;
+using Pairs = std::vector<std::pair<int, int>>;
+
+AlignedBox3d face_box(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, int f) {
+  AlignedBox3d box;
+  for (int c = 0; c < 3; ++c) box.extend(Vector3d(V.row(F(f, c)).transpose()));
+  return box;
+}
+
+/// Closed boxes overlap, written out coordinate by coordinate (independent of Eigen's).
+bool overlap(const AlignedBox3d& a, const AlignedBox3d& b) {
+  for (int d = 0; d < 3; ++d)
+    if (a.max()[d] < b.min()[d] || b.max()[d] < a.min()[d]) return false;
+  return true;
+}
+
+/// A triangle soup: n triangles of size ~`size` in the unit cube; coordinates snapped to a
+/// 1/64 grid so that touching boxes (equal coordinates) are common.
+Mesh random_soup(std::mt19937& rng, int n, double size) {
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  Mesh mesh;
+  mesh.V.resize(3 * n, 3);
+  mesh.F.resize(n, 3);
+  for (int f = 0; f < n; ++f) {
+    const Vector3d center(unit(rng), unit(rng), unit(rng));
+    for (int c = 0; c < 3; ++c) {
+      const Vector3d p = center + size * Vector3d(unit(rng), unit(rng), unit(rng));
+      mesh.V.row(3 * f + c) = (p * 64).array().round().matrix().transpose() / 64;
+      mesh.F(f, c) = 3 * f + c;
+    }
+  }
+  return mesh;
+}
+
+Pairs brute_pairs(const Mesh& a, const Mesh& b) {
+  Pairs pairs;
+  for (int f = 0; f < a.face_count(); ++f)
+    for (int g = 0; g < b.face_count(); ++g)
+      if (overlap(face_box(a.V, a.F, f), face_box(b.V, b.F, g))) pairs.emplace_back(f, g);
+  return pairs;
+}
+
+Pairs bvh_pairs(const TriangleBvh& a, const TriangleBvh& b) {
+  Pairs pairs;
+  a.for_each_overlapping_pair(b, [&](int f, int g) { pairs.emplace_back(f, g); });
+  std::sort(pairs.begin(), pairs.end());
+  EXPECT_TRUE(std::adjacent_find(pairs.begin(), pairs.end()) == pairs.end()) << "a pair visited twice";
+  return pairs;
+}
+
+std::vector<int> box_query(const TriangleBvh& bvh, const AlignedBox3d& box) {
+  std::vector<int> faces;
+  bvh.for_each_overlapping(box, [&](int f) { faces.push_back(f); });
+  std::sort(faces.begin(), faces.end());
+  EXPECT_TRUE(std::adjacent_find(faces.begin(), faces.end()) == faces.end()) << "a face visited twice";
+  return faces;
+}
+
+std::vector<int> brute_box_query(const Mesh& mesh, const AlignedBox3d& box) {
+  std::vector<int> faces;
+  for (int f = 0; f < mesh.face_count(); ++f)
+    if (overlap(face_box(mesh.V, mesh.F, f), box)) faces.push_back(f);
+  return faces;
+}
+
+TEST(TriangleBvh, BoxQueriesMatchBruteForceOnSoups) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int n : {1, 3, 5, 17, 300}) {
+    const Mesh soup = random_soup(rng, n, 0.1);
+    const TriangleBvh bvh(soup.V, soup.F);
+    for (int q = 0; q < 50; ++q) {
+      AlignedBox3d box(Vector3d(unit(rng), unit(rng), unit(rng)));
+      box.extend(Vector3d(unit(rng), unit(rng), unit(rng)) * (q % 2 ? 1.0 : 0.3));
+      if (q % 5 == 0) box = face_box(soup.V, soup.F, q % n);  // shares planes with face boxes
+      if (q % 7 == 0) box = AlignedBox3d(Vector3d(soup.V.row(soup.F(0, 0)).transpose()));  // a point box
+      ASSERT_EQ(box_query(bvh, box), brute_box_query(soup, box)) << "n " << n << " query " << q;
+    }
+    EXPECT_TRUE(box_query(bvh, AlignedBox3d()).empty());  // an empty box overlaps nothing
+  }
+}
+
+TEST(TriangleBvh, PairQueriesMatchBruteForceOnSoups) {
+  std::mt19937 rng(12);
+  for (auto [n, m] : {std::pair{1, 1}, {4, 9}, {60, 200}, {400, 250}}) {
+    const Mesh a = random_soup(rng, n, 0.15), b = random_soup(rng, m, 0.05);
+    const TriangleBvh ta(a.V, a.F), tb(b.V, b.F);
+    const Pairs expected = brute_pairs(a, b);
+    EXPECT_EQ(bvh_pairs(ta, tb), expected) << n << " × " << m;
+    Pairs swapped;
+    for (auto [f, g] : bvh_pairs(tb, ta)) swapped.emplace_back(g, f);
+    std::sort(swapped.begin(), swapped.end());
+    EXPECT_EQ(swapped, expected);
+    if (n == 400) {
+      EXPECT_GT(expected.size(), 50u);  // the test is not vacuous
+    }
+  }
+}
+
+TEST(TriangleBvh, TouchingBoxesCount) {
+  // Two triangles whose boxes share exactly the plane x = 1.
+  Mesh a, b;
+  a.V.resize(3, 3);
+  a.V << 0, 0, 0, 1, 0, 0, 0, 1, 0;
+  a.F.resize(1, 3);
+  a.F << 0, 1, 2;
+  b.V = a.V;
+  b.V.col(0).array() += 1.0;
+  b.F = a.F;
+  const TriangleBvh ta(a.V, a.F), tb(b.V, b.F);
+  EXPECT_EQ(bvh_pairs(ta, tb), (Pairs{{0, 0}}));
+  b.V.col(0).array() += 1e-15;
+  const TriangleBvh tc(b.V, b.F);
+  EXPECT_TRUE(bvh_pairs(ta, tc).empty());
+}
+
+TEST(TriangleBvh, BoundsAndBoxQueriesOnCgalMesh) {
+  const Mesh mesh = testing::cgal_off("bunny00.off");
+  ASSERT_GT(mesh.face_count(), 100);
+  const TriangleBvh bvh(mesh.V, mesh.F);
+  AlignedBox3d expected;
+  for (int f = 0; f < mesh.face_count(); ++f) expected.extend(face_box(mesh.V, mesh.F, f));
+  EXPECT_EQ(bvh.bounds().min(), expected.min());
+  EXPECT_EQ(bvh.bounds().max(), expected.max());
+  EXPECT_EQ(bvh.faces(), mesh.F);
+
+  // Box queries around random vertices.
+  std::mt19937 rng(5);
+  std::uniform_int_distribution<int> vertex(0, mesh.vertex_count() - 1);
+  const double radius = 0.02 * expected.diagonal().norm();
+  for (int q = 0; q < 30; ++q) {
+    const Vector3d c = mesh.V.row(vertex(rng)).transpose();
+    const AlignedBox3d box(c - Vector3d::Constant(radius), c + Vector3d::Constant(radius));
+    ASSERT_EQ(box_query(bvh, box), brute_box_query(mesh, box));
+  }
+}
+
+TEST(TriangleBvh, SelfPairsOnCgalMesh) {
+  // Self pairs: every ordered pair (f, g) with overlapping boxes, including (f, f).
+  const Mesh mesh = testing::cgal_off("elephant.off");
+  const TriangleBvh bvh(mesh.V, mesh.F);
+  std::vector<AlignedBox3d> boxes;
+  for (int f = 0; f < mesh.face_count(); ++f) boxes.push_back(face_box(mesh.V, mesh.F, f));
+  const int limit = 2000;  // brute force for the first faces against all, to stay quick
+  Pairs want, got;
+  for (int f = 0; f < limit; ++f)
+    for (int g = 0; g < mesh.face_count(); ++g)
+      if (overlap(boxes[f], boxes[g])) want.emplace_back(f, g);
+  for (auto [f, g] : bvh_pairs(bvh, bvh))
+    if (f < limit) got.emplace_back(f, g);
+  EXPECT_EQ(got, want);
+  EXPECT_GT(want.size(), 10u * limit);  // adjacent faces' boxes overlap
+}
+
+TEST(TriangleBvh, EmptyMesh) {
+  const TriangleBvh empty(Eigen::MatrixX3d(0, 3), Eigen::MatrixX3i(0, 3));
+  EXPECT_TRUE(empty.bounds().isEmpty());
+  EXPECT_TRUE(box_query(empty, AlignedBox3d(Vector3d(-1, -1, -1), Vector3d(1, 1, 1))).empty());
+  std::mt19937 rng(1);
+  const Mesh soup = random_soup(rng, 10, 0.1);
+  const TriangleBvh full(soup.V, soup.F);
+  EXPECT_TRUE(bvh_pairs(empty, full).empty());
+  EXPECT_TRUE(bvh_pairs(full, empty).empty());
+}
+
+}  // namespace
+}  // namespace reconfig::geometry
