@@ -158,7 +158,7 @@ bool SymbolicKinematics::solve_continued(double angle, Eigen::Matrix2Xd& X, Stat
   // Newton blocks: continue from the last solution in steps of at most 3°.
   const double kStep = 3 * std::numbers::pi / 180;
   double from = guess_angle_;
-  double delta = std::remainder(angle - from, 2 * std::numbers::pi);
+  const double delta = angle - from;  // unwrapped: the caller chooses the way round
   const int steps = static_cast<int>(std::ceil(std::abs(delta) / kStep));
   for (int s = 1; s < steps; ++s)
     if (!solve_once(from + delta * s / steps, X, nullptr, failure)) return false;

@@ -30,8 +30,9 @@ struct ReconstructionFailure {
 /// triangle orientations, rigid coordinates) of an initial configuration.
 ///
 /// Not thread-safe when the order has Newton blocks (they keep their last solution as the
-/// next starting guess and are continued in steps of at most 3° from it); otherwise `solve`
-/// is a pure function and may run concurrently.
+/// next starting guess and are continued in steps of at most 3° from the last angle to the
+/// new one, unwrapped: pass angles that reach the target the way round you mean);
+/// otherwise `solve` is a pure function and may run concurrently.
 class SymbolicKinematics {
  public:
   /// @throws reconfig::InputError (without a file) if a reconstruction triangle is
