@@ -25,14 +25,6 @@ std::vector<double> breakpoints(const std::vector<double>& key_times, double t0,
   return b;
 }
 
-template <class Keys>
-std::vector<double> times_of(const Keys& keys) {
-  std::vector<double> times;
-  times.reserve(keys.size());
-  for (const auto& k : keys) times.push_back(k.time);
-  return times;
-}
-
 /// Segment containing the open piece (a, b) (a < b), or none when the track is constant
 /// there (before the first key, after the last, single key).
 struct PieceSegment {
@@ -129,7 +121,7 @@ MotionBound keyframed_motion_bound(const BezierTranslationTrack& translation,
   if (!(t1 > t0)) return out;
 
   // Translation.
-  const std::vector<double> xt = times_of(translation.keys());
+  const std::vector<double>& xt = translation.key_times();
   const std::vector<double> xb = breakpoints(xt, t0, t1);
   const auto x = [&](double t) { return translation.evaluate(t); };
   const Eigen::Vector3d x_start = x(t0);
@@ -155,7 +147,7 @@ MotionBound keyframed_motion_bound(const BezierTranslationTrack& translation,
   // Rotation.
   double r_dev = 0.0, turned = 0.0;
   if (radius > 0.0) {
-    const std::vector<double> rt = times_of(rotation.keys());
+    const std::vector<double>& rt = rotation.key_times();
     const std::vector<double> rb = breakpoints(rt, t0, t1);
     const auto rot = [&](double t) { return Eigen::Matrix3d(rotation.evaluate(t).toRotationMatrix()); };
     for (std::size_t i = 0; i + 1 < rb.size(); ++i) {
@@ -179,7 +171,7 @@ MotionBound screw_motion_bound(const ScrewTrack& track, double radius, double t0
   MotionBound out;
   if (!(t1 > t0)) return out;
   const Eigen::Vector3d& c = track.center();
-  const std::vector<double> st = times_of(track.keys());
+  const std::vector<double>& st = track.key_times();
   const std::vector<double> sb = breakpoints(st, t0, t1);
   const auto xc = [&](double t) { return Eigen::Vector3d(track.at(t) * c); };
   const auto rot = [&](double t) { return Eigen::Matrix3d(track.at(t).linear()); };

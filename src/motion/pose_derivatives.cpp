@@ -7,20 +7,9 @@ namespace reconfig::motion {
 
 using detail::KeyLocation;
 
-namespace {
-
-std::vector<double> key_times(const auto& keys) {
-  std::vector<double> times;
-  times.reserve(keys.size());
-  for (const auto& k : keys) times.push_back(k.time);
-  return times;
-}
-
-}  // namespace
-
 std::vector<TranslationKeyJacobian> translation_jacobian(const BezierTranslationTrack& track,
                                                          double t) {
-  const KeyLocation loc = detail::locate(key_times(track.keys()), t);
+  const KeyLocation loc = detail::locate(track.key_times(), t);
   std::vector<TranslationKeyJacobian> out;
   const Eigen::Matrix3d I = Eigen::Matrix3d::Identity();
   if (loc.region != KeyLocation::Region::kInside) {
@@ -56,7 +45,7 @@ std::vector<TranslationKeyJacobian> translation_jacobian(const BezierTranslation
 
 std::vector<RotationKeyJacobian> rotation_jacobian(const SlerpRotationTrack& track,
                                                    const Eigen::Vector3d& offset, double t) {
-  const KeyLocation loc = detail::locate(key_times(track.keys()), t);
+  const KeyLocation loc = detail::locate(track.key_times(), t);
   const Eigen::Vector3d r = track.evaluate(t) * offset;  // R(t)(p − c)
   const Eigen::Matrix3d minus_r_hat = -detail::hat(r);     // δ ↦ δ × r
   std::vector<RotationKeyJacobian> out;

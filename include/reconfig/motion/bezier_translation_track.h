@@ -43,6 +43,8 @@ class BezierTranslationTrack {
   Eigen::Vector3d derivative(double t) const;
 
   const std::vector<TranslationKey>& keys() const { return keys_; }
+  /// The key times s_0 < s_1 < ..., in key order.
+  const std::vector<double>& key_times() const { return times_; }
   double start_time() const { return keys_.front().time; }
   double end_time() const { return keys_.back().time; }
   /// Number of Bézier segments: keys().size() − 1.

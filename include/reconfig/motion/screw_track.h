@@ -51,6 +51,8 @@ class ScrewTrack {
   /// The keys, quaternions normalized.
   const std::vector<ScrewKey>& keys() const { return keys_; }
   const Eigen::Vector3d& center() const { return center_; }
+  /// The key times s_0 < s_1 < ..., in key order.
+  const std::vector<double>& key_times() const { return times_; }
   double start_time() const { return keys_.front().time; }
   double end_time() const { return keys_.back().time; }
   /// Number of screw segments: keys().size() − 1.

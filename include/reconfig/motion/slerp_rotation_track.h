@@ -45,6 +45,8 @@ class SlerpRotationTrack {
 
   /// The keys, quaternions normalized.
   const std::vector<RotationKey>& keys() const { return keys_; }
+  /// The key times s_0 < s_1 < ..., in key order.
+  const std::vector<double>& key_times() const { return times_; }
   double start_time() const { return keys_.front().time; }
   double end_time() const { return keys_.back().time; }
   /// Number of slerp segments: keys().size() − 1.
