@@ -1,6 +1,7 @@
 #include "scene/detail/json_cursor.h"
 
 #include <cmath>
+#include <limits>
 #include <fmt/format.h>
 
 namespace reconfig::scene::detail {
@@ -84,7 +85,9 @@ Eigen::Quaterniond JsonCursor::as_unit_quaternion() const {
   const double norm = q.norm();
   if (std::abs(norm - 1.0) > 1e-3)
     fail(fmt::format("quaternion [w, x, y, z] must have unit length, found length {:.6g}", norm));
-  q.normalize();
+  // Normalize once: a quaternion written by this program is already unit to the last bit,
+  // and normalizing it again could change that bit (saving must round-trip exactly).
+  if (std::abs(norm - 1.0) > 4 * std::numeric_limits<double>::epsilon()) q.normalize();
   return q;
 }
 
