@@ -66,7 +66,7 @@ std::string linkage_svg(const Linkage& linkage, const SvgOptions& options) {
   if (!options.title.empty())
     svg << "<text x=\"8\" y=\"20\" font-family=\"sans-serif\" font-size=\"16\">" << escape(options.title) << "</text>\n";
   svg << "<text x=\"8\" y=\"" << number(header - 6) << "\" font-family=\"sans-serif\" font-size=\"12\" fill=\"#555\">"
-      << escape(range.full_rotation ? "full rotation" : range.describe().substr(0, range.describe().find(';')))
+      << escape(range.full_rotation ? "full rotation" : range.describe().substr(0, range.describe().find(" (")))
       << "</text>\n";
   svg << "<g id=\"curves\" fill=\"none\">\n";
   int color = 0;

@@ -41,6 +41,13 @@ bool walk(const SymbolicKinematics& kinematics, double sign, double step, double
       }
     }
     end = good;
+    // Just beyond a dead point the failing triangle is degenerate: name it that way.
+    const Rule& rule = kinematics.order().rules[failure.rule];
+    if (failure.kind == ReconstructionFailure::Kind::kCannotClose)
+      failure.message = "triangle " + describe_rule(kinematics.linkage(), kinematics.order(), rule) +
+                        " flattens (a dead point) and cannot close beyond";
+    else
+      failure.message = describe_rule(kinematics.linkage(), kinematics.order(), rule) + " locks (a dead point)";
     kinematics.reset_continuation();
     return false;
   }
@@ -61,8 +68,9 @@ bool MotionRange::contains(double angle) const {
 std::string MotionRange::describe() const {
   if (full_rotation) return "full rotation";
   std::string text = "rocks between " + degrees(lower) + " and " + degrees(upper);
-  text += "; below: " + lower_failure.message + "; above: " + upper_failure.message;
-  return text;
+  if (lower_failure.message == upper_failure.message) return text + " (at both ends: " + upper_failure.message + ")";
+  return text + " (at " + degrees(lower) + ": " + lower_failure.message + "; at " + degrees(upper) + ": " +
+         upper_failure.message + ")";
 }
 
 MotionRange motion_range(const SymbolicKinematics& kinematics, double step) {

@@ -15,12 +15,14 @@ struct MotionRange {
   /// Unwrapped angles (radians), lower ≤ initial ≤ upper; for a full rotation
   /// [initial, initial + 2π].
   double lower = 0, upper = 0;
-  /// What stops the motion just beyond each end (kind kNone for a full rotation).
+  /// What stops the motion just beyond each end (kind kNone for a full rotation); the
+  /// message names the triangle that flattens there.
   ReconstructionFailure lower_failure, upper_failure;
 
   /// True if `angle` (radians, any winding) can be reached from the initial configuration.
   bool contains(double angle) const;
-  /// "full rotation", or "rocks between 12.0° and 147.0°" followed by the causes.
+  /// "full rotation", or "rocks between 12.0° and 147.0° (at both ends: triangle …
+  /// flattens (a dead point) and cannot close beyond)".
   std::string describe() const;
 };
 
