@@ -146,6 +146,17 @@ def klann():
     write("klann.json", joints, links, ("O", "C"), [("foot", "foot")])
 
 
+def triad():
+    # A complex kinematic loop (LinkEdit §3.3, "Limitations"): the ternary link {P1, P2, P3}
+    # hangs from the crank tip C and from the fixed joints G and H by one bar each. No joint
+    # has two known neighbours, so the closed-form rules are stuck; `reconfig` solves the
+    # three joints together by Newton's method.
+    joints = [("O", [0.0, 0.0], True), ("C", [1.0, 0.0], False), ("G", [5.0, 0.0], True), ("H", [3.0, 5.0], True),
+              ("P1", [3.0, 1.0], False), ("P2", [5.0, 2.5], False), ("P3", [3.5, 3.0], False)]
+    links = [["O", "C"], ["C", "P1"], ["G", "P2"], ["H", "P3"], ["P1", "P2", "P3"]]
+    write("triad_complex_loop.json", joints, links, ("O", "C"), [("tip", "P3")])
+
+
 if __name__ == "__main__":
     jansen()
     strandbeest(3, "strandbeest_3.json")
@@ -154,3 +165,4 @@ if __name__ == "__main__":
     peaucellier_lipkin()
     four_bar()
     klann()
+    triad()

@@ -9,6 +9,7 @@
 
 #include "reconfig/common/input_error.h"
 #include "reconfig/linkage/joint_order.h"
+#include "reconfig/linkage/motion_range.h"
 #include "reconfig/linkage/symbolic_kinematics.h"
 
 namespace reconfig::linkage {
@@ -138,6 +139,37 @@ struct Parser {
   }
 };
 
+// The rules keep the distances they use; a link whose other distances would have to
+// change as the motor turns makes the linkage over-constrained (it would lock). Checked on
+// 24 motor angles over the motion range.
+void check_not_over_constrained(const SymbolicKinematics& kinematics) {
+  const Linkage& linkage = kinematics.linkage();
+  const MotionRange range = motion_range(kinematics);
+  const Eigen::Matrix2Xd X0 = linkage.initial_positions();
+  double scale = 1;
+  for (const Joint& joint : linkage.joints) scale = std::max(scale, joint.position.cwiseAbs().maxCoeff());
+  Eigen::Matrix2Xd X;
+  for (int s = 0; s < 24; ++s) {
+    const double angle = range.lower + (range.upper - range.lower) * (s + 0.5) / 24;
+    if (!kinematics.solve(angle, X)) continue;  // not reached: the range says it is
+    for (std::size_t l = 0; l < linkage.links.size(); ++l) {
+      const auto& link = linkage.links[l];
+      for (std::size_t a = 0; a < link.size(); ++a)
+        for (std::size_t b = a + 1; b < link.size(); ++b) {
+          const double before = (X0.col(link[a]) - X0.col(link[b])).norm();
+          const double after = (X.col(link[a]) - X.col(link[b])).norm();
+          if (std::abs(after - before) > 1e-7 * scale)
+            throw InputError("", "links[" + std::to_string(l) + "]",
+                             "the linkage is over-constrained: joints \"" + linkage.joints[link[a]].name + "\" and \"" +
+                                 linkage.joints[link[b]].name + "\" of this link would have to move from " +
+                                 std::to_string(before) + " to " + std::to_string(after) +
+                                 " apart as the motor turns (the mechanism locks)");
+        }
+    }
+  }
+  kinematics.reset_continuation();
+}
+
 }  // namespace
 
 Linkage parse_linkage(const std::string& text, const std::string& file) { return Parser{file}.parse(text); }
@@ -150,7 +182,8 @@ Linkage read_linkage(const std::filesystem::path& path) {
   Linkage linkage = parse_linkage(buffer.str(), path.string());
   try {
     const JointOrder order = order_joints(linkage);
-    SymbolicKinematics kinematics(linkage, order);  // checks the initial configuration
+    const SymbolicKinematics kinematics(linkage, order);  // checks the initial configuration
+    check_not_over_constrained(kinematics);
   } catch (const InputError& error) {
     throw error.in_file(path.string());
   }

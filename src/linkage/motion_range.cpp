@@ -46,8 +46,12 @@ bool walk(const SymbolicKinematics& kinematics, double sign, double step, double
     if (failure.kind == ReconstructionFailure::Kind::kCannotClose)
       failure.message = "triangle " + describe_rule(kinematics.linkage(), kinematics.order(), rule) +
                         " flattens (a dead point) and cannot close beyond";
-    else
-      failure.message = describe_rule(kinematics.linkage(), kinematics.order(), rule) + " locks (a dead point)";
+    else {
+      std::string names;
+      for (int k : kinematics.order().blocks[rule.block].joints)
+        names += (names.empty() ? "\"" : ", \"") + kinematics.linkage().joints[k].name + "\"";
+      failure.message = "complex loop {" + names + "} locks (a dead point)";
+    }
     kinematics.reset_continuation();
     return false;
   }

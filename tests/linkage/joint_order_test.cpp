@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "linkage_test_util.h"
 #include "reconfig/common/input_error.h"
 
@@ -33,6 +35,15 @@ TEST(JointOrder, EveryJointOnceAndInputsFirst) {
     const JointOrder order = order_joints(linkage);
     std::vector<int> seen(linkage.joints.size(), 0);
     for (const Rule& rule : order.rules) {
+      if (rule.kind == RuleKind::kNewtonBlock) {
+        const NewtonBlock& block = order.blocks[rule.block];
+        for (const auto& link : block.links)
+          for (int joint : {link.r0, link.r1})
+            if (std::find(block.joints.begin(), block.joints.end(), joint) == block.joints.end())
+              EXPECT_TRUE(seen[joint]) << name;
+        for (int joint : block.joints) ++seen[joint];
+        continue;
+      }
       if (rule.i >= 0) EXPECT_TRUE(seen[rule.i]) << name;
       if (rule.j >= 0) EXPECT_TRUE(seen[rule.j]) << name;
       ++seen[rule.k];

@@ -19,7 +19,7 @@ inline Linkage example(const std::string& name) {
 
 inline const char* const kExamples[] = {"jansen.json",           "strandbeest_3.json",    "strandbeest_10.json",
                                         "klann.json",            "chebyshev_lambda.json", "peaucellier_lipkin.json",
-                                        "four_bar_crank_rocker.json"};
+                                        "four_bar_crank_rocker.json", "triad_complex_loop.json"};
 
 namespace detail {
 

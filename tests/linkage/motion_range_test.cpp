@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "linkage_test_util.h"
+#include "reconfig/linkage/newton_kinematics.h"
 
 namespace reconfig::linkage {
 namespace {
@@ -38,6 +39,34 @@ TEST(MotionRange, PeaucellierLipkinRocksBetweenItsAnalyticDeadPoints) {
   EXPECT_EQ(text,
             "rocks between -82.8° and 82.8° (at both ends: triangle (\"O\", \"A\") -> \"B\" flattens (a dead "
             "point) and cannot close beyond)");
+}
+
+TEST(MotionRange, AComplexLoopLocksWhereTheNewtonBaselineStopsToo) {
+  const Linkage linkage = test::example("triad_complex_loop.json");
+  const SymbolicKinematics kinematics(linkage, order_joints(linkage));
+  const MotionRange range = motion_range(kinematics);
+  ASSERT_FALSE(range.full_rotation);
+  EXPECT_EQ(range.upper_failure.kind, ReconstructionFailure::Kind::kNewtonFailed);
+  EXPECT_EQ(range.upper_failure.message, "complex loop {\"P1\", \"P2\", \"P3\"} locks (a dead point)");
+  // The rigid-body baseline, continued from the initial configuration, converges just inside
+  // each end and cannot satisfy the constraints just outside.
+  for (const double end : {range.lower, range.upper}) {
+    const double inward = end < kinematics.initial_angle() ? 1 : -1;
+    NewtonKinematics newton(linkage);
+    Eigen::Matrix2Xd X;
+    const int steps = 100;
+    for (int s = 1; s <= steps; ++s) {
+      const double angle = kinematics.initial_angle() + (end + inward * 1e-3 - kinematics.initial_angle()) * s / steps;
+      ASSERT_TRUE(newton.solve(angle, X)) << angle;
+    }
+    EXPECT_FALSE(newton.solve(end - inward * 1e-2, X)) << end;
+  }
+  Eigen::Matrix2Xd X;
+  ReconstructionFailure failure;
+  kinematics.reset_continuation();
+  EXPECT_FALSE(kinematics.solve(range.upper + 0.05, X, &failure));
+  EXPECT_EQ(failure.kind, ReconstructionFailure::Kind::kNewtonFailed);
+  EXPECT_NE(failure.message.find("did not converge"), std::string::npos) << failure.message;
 }
 
 TEST(MotionRange, DoubleRockerMatchesTheLawOfCosines) {

@@ -21,8 +21,9 @@ namespace reconfig::linkage {
 /// @throws reconfig::InputError naming the JSON path, e.g. `links[2][1]: unknown joint "Q"`
 Linkage parse_linkage(const std::string& text, const std::string& file = "");
 
-/// Reads, parses and validates a linkage file, and checks that it is fully constrained and
-/// not singular in its initial configuration (order_joints + SymbolicKinematics).
+/// Reads, parses and validates a linkage file, and checks that it is fully constrained
+/// (order_joints), not singular in its initial configuration (SymbolicKinematics), and not
+/// over-constrained: no link distance would have to change as the motor turns.
 /// @throws reconfig::InputError naming the file and the JSON path
 Linkage read_linkage(const std::filesystem::path& path);
 
