@@ -11,11 +11,13 @@
 #include <exception>
 #include <fstream>
 #include <iterator>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "geometry/detail/read_off.h"
+#include "geometry/detail/read_ply.h"
 #include "geometry/detail/weld_vertices.h"
 #include "reconfig/common/input_error.h"
 
@@ -108,8 +110,15 @@ Mesh scene_to_mesh(const aiScene& scene) {
   return out;
 }
 
-Mesh read_off_mesh(const std::string& bytes) {
-  detail::OffContent content = detail::read_off(bytes);
+/// Reads OFF and PLY with our own readers (see load_mesh.h for why); nullopt for other formats.
+std::optional<Mesh> read_own_format(const std::string& extension, const std::string& bytes) {
+  detail::RawMesh content;
+  if (extension == "off")
+    content = detail::read_off(bytes);
+  else if (extension == "ply")
+    content = detail::read_ply(bytes);
+  else
+    return std::nullopt;
   if (content.triangles.empty()) throw InputError("", "", "no triangles");
   Mesh out;
   detail::weld_vertices(content.positions, content.triangles, out.V, out.F);
@@ -124,7 +133,19 @@ std::string read_file(const std::filesystem::path& path) {
   return bytes;
 }
 
+/// One importer per thread: building one sets up all of Assimp's importers, which costs more
+/// than reading a small file.
+Assimp::Importer& thread_importer() {
+  thread_local Assimp::Importer importer;
+  return importer;
+}
+
+/// Converts the scene `importer` just read (or reports why it could not), then frees it.
 Mesh read_scene(Assimp::Importer& importer, const aiScene* scene) {
+  struct FreeScene {
+    Assimp::Importer& importer;
+    ~FreeScene() { importer.FreeScene(); }
+  } free_scene{importer};
   if (scene == nullptr) {
     std::string why = importer.GetErrorString();
     if (why.empty()) why = "unreadable or unsupported mesh file";
@@ -140,8 +161,9 @@ Mesh load_mesh(const std::filesystem::path& path) {
   if (!std::filesystem::exists(path, error)) throw InputError(path.string(), "", "file not found");
   if (std::filesystem::is_directory(path, error)) throw InputError(path.string(), "", "is a folder, not a mesh file");
   try {
-    if (lower_extension(path.extension().string()) == "off") return read_off_mesh(read_file(path));
-    Assimp::Importer importer;
+    const std::string extension = lower_extension(path.extension().string());
+    if (extension == "off" || extension == "ply") return *read_own_format(extension, read_file(path));
+    Assimp::Importer& importer = thread_importer();
     return read_scene(importer, importer.ReadFile(path.string(), kImportFlags));
   } catch (const InputError& e) {
     throw e.in_file(path.string());
@@ -154,8 +176,8 @@ Mesh load_mesh_from_memory(const std::string& bytes, const std::string& extensio
   if (bytes.empty()) throw InputError("", "", "empty file");
   const std::string hint = lower_extension(extension_hint);
   try {
-    if (hint == "off") return read_off_mesh(bytes);
-    Assimp::Importer importer;
+    if (auto mesh = read_own_format(hint, bytes)) return *mesh;
+    Assimp::Importer& importer = thread_importer();
     return read_scene(importer, importer.ReadFileFromMemory(bytes.data(), bytes.size(), kImportFlags, hint.c_str()));
   } catch (const InputError&) {
     throw;

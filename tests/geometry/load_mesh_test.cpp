@@ -2,10 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <sstream>
 
 #include "mesh_test_helpers.h"
 #include "reconfig/common/input_error.h"
@@ -118,20 +120,18 @@ TEST(LoadMesh, OffKeepsLargeAndConcavePolygons) {
   // A prism over a 12-gon (caps with 12 corners) and over a concave L-shaped hexagon.
   auto prism = [](const std::vector<Eigen::Vector2d>& outline) {
     const int n = static_cast<int>(outline.size());
-    std::string off = "OFF\n" + std::to_string(2 * n) + " " + std::to_string(n + 2) + " 0\n";
+    std::ostringstream off;
+    off.precision(17);
+    off << "OFF\n" << 2 * n << " " << n + 2 << " 0\n";
     for (int z = 0; z < 2; ++z)
-      for (const auto& p : outline) off += std::to_string(p.x()) + " " + std::to_string(p.y()) + " " + std::to_string(z) + "\n";
-    off += std::to_string(n);
-    for (int i = n - 1; i >= 0; --i) off += " " + std::to_string(i);
-    off += "\n" + std::to_string(n);
-    for (int i = 0; i < n; ++i) off += " " + std::to_string(n + i);
-    off += "\n";
-    for (int i = 0; i < n; ++i) {
-      const int j = (i + 1) % n;
-      off += "4 " + std::to_string(i) + " " + std::to_string(j) + " " + std::to_string(n + j) + " " +
-             std::to_string(n + i) + "\n";
-    }
-    return load_mesh_from_memory(off, "off");
+      for (const auto& p : outline) off << p.x() << " " << p.y() << " " << z << "\n";
+    off << n;
+    for (int i = n - 1; i >= 0; --i) off << " " << i;
+    off << "\n" << n;
+    for (int i = 0; i < n; ++i) off << " " << n + i;
+    off << "\n";
+    for (int i = 0; i < n; ++i) off << "4 " << i << " " << (i + 1) % n << " " << n + (i + 1) % n << " " << n + i << "\n";
+    return load_mesh_from_memory(off.str(), "off");
   };
   std::vector<Eigen::Vector2d> circle;
   for (int i = 0; i < 12; ++i) circle.emplace_back(std::cos(i * M_PI / 6), std::sin(i * M_PI / 6));
@@ -187,6 +187,82 @@ TEST(LoadMesh, TriangulatesPolygons) {
   EXPECT_EQ(cube.face_count(), 12);
   EXPECT_TRUE(check_mesh(cube).is_valid_solid()) << check_mesh(cube).summary();
   EXPECT_DOUBLE_EQ(mass_properties(cube).volume, 8);
+}
+
+// --- PLY ------------------------------------------------------------------------------------
+
+/// Appends `value` as `T` in little- or big-endian byte order.
+template <class T>
+void put(std::string& bytes, T value, bool big_endian) {
+  char raw[sizeof(T)];
+  std::memcpy(raw, &value, sizeof(T));
+  if (big_endian) std::reverse(raw, raw + sizeof(T));
+  bytes.append(raw, sizeof(T));
+}
+
+/// A unit cube as binary PLY with quads, extra vertex properties and an extra element.
+std::string binary_ply_cube(bool big_endian) {
+  std::string bytes = std::string("ply\nformat ") + (big_endian ? "binary_big_endian" : "binary_little_endian") +
+                      " 1.0\ncomment made by a test\nelement vertex 8\nproperty double x\nproperty float nx\n"
+                      "property double y\nproperty double z\nproperty uchar red\nelement face 6\n"
+                      "property list uchar uint vertex_indices\nproperty list int float texcoord\n"
+                      "element edge 1\nproperty int vertex1\nproperty int vertex2\nend_header\n";
+  for (int i = 0; i < 8; ++i) {
+    put<double>(bytes, i & 1, big_endian);
+    put<float>(bytes, 0.5f, big_endian);
+    put<double>(bytes, (i >> 1) & 1, big_endian);
+    put<double>(bytes, (i >> 2) & 1, big_endian);
+    put<std::uint8_t>(bytes, 200, big_endian);
+  }
+  const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  for (const auto& quad : quads) {
+    put<std::uint8_t>(bytes, 4, big_endian);
+    for (int v : quad) put<std::uint32_t>(bytes, static_cast<std::uint32_t>(v), big_endian);
+    put<std::int32_t>(bytes, 2, big_endian);
+    put<float>(bytes, 0.25f, big_endian);
+    put<float>(bytes, 0.75f, big_endian);
+  }
+  put<std::int32_t>(bytes, 0, big_endian);
+  put<std::int32_t>(bytes, 1, big_endian);
+  return bytes;
+}
+
+TEST(LoadMesh, PlyBinaryBothEndiannesses) {
+  for (bool big_endian : {false, true}) {
+    SCOPED_TRACE(big_endian);
+    const Mesh cube = load_mesh_from_memory(binary_ply_cube(big_endian), "ply");
+    EXPECT_EQ(cube.vertex_count(), 8);
+    EXPECT_EQ(cube.face_count(), 12);
+    EXPECT_TRUE(check_mesh(cube).is_valid_solid()) << check_mesh(cube).summary();
+    EXPECT_DOUBLE_EQ(mass_properties(cube).volume, 1);
+    // Every truncation of the data is an error, not a crash.
+    const std::string full = binary_ply_cube(big_endian);
+    const std::size_t data = full.find("end_header\n") + 11;
+    for (std::size_t length = data; length + 8 < full.size(); length += 7)
+      error_of([&] { load_mesh_from_memory(full.substr(0, length), "ply"); });
+  }
+}
+
+TEST(LoadMesh, PlyErrorsNameTheElement) {
+  const std::string header =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+      "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  EXPECT_EQ(load_mesh_from_memory(header + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", "ply").face_count(), 1);
+  EXPECT_STREQ(error_of([&] { load_mesh_from_memory(header + "0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n", "ply"); }).what(),
+               "face 0: vertex index 3 out of range (3 vertices)");
+  EXPECT_EQ(error_of([&] { load_mesh_from_memory(header + "0 0 0\n1 0 0\n0 1 0\n3 0 1 -2\n", "ply"); }).location(),
+            "face 0");
+  EXPECT_EQ(error_of([&] { load_mesh_from_memory(header + "0 0 0\n1 inf 0\n0 1 0\n3 0 1 2\n", "ply"); }).location(),
+            "vertex 1");
+  EXPECT_EQ(error_of([&] { load_mesh_from_memory(header + "0 0 0\n1 0 0\n0 1 0\n3 0 1\n", "ply"); }).location(),
+            "face 0");
+  EXPECT_EQ(error_of([&] { load_mesh_from_memory(header + "0 0 0\n1 0 0\n0 x 0\n3 0 1 2\n", "ply"); }).location(),
+            "vertex 2");
+  // The header that made Assimp 5.2 loop forever.
+  error_of([] { load_mesh_from_memory("ply\nformat ascii 1.0\nelement face 12\nproperty list", "ply"); });
+  EXPECT_EQ(error_of([] { load_mesh_from_memory("ply\nformat ascii 1.0\nelement vertex 3\nproperty float\n", "ply"); })
+                .location(),
+            "header line 4");
 }
 
 // --- glTF: one mesh placed by two nodes, one of them mirrored. ------------------------------
@@ -290,8 +366,11 @@ TEST(LoadMesh, CgalMeshesRoundTripThroughObjStlAndPly) {
     for (const char* file : {"m.obj", "m.stl", "a.stl", "m.ply"}) {
       SCOPED_TRACE(file);
       const Mesh back = load_mesh(dir / file);
-      // Assimp reads floats, and its text parser may miss the nearest float by an ulp.
-      if (std::string(file) == "m.stl")
+      // Our PLY reader is exact; Assimp reads floats, and its text parser may miss the nearest
+      // float by an ulp.
+      if (std::string(file) == "m.ply")
+        EXPECT_TRUE(same_mesh(back, original));
+      else if (std::string(file) == "m.stl")
         EXPECT_TRUE(same_mesh(back, testing::rounded_to_float(original)));
       else
         EXPECT_TRUE(testing::same_faces_within(back, original, 1e-6 * original.V.cwiseAbs().maxCoeff()));

@@ -84,7 +84,7 @@ inline std::string ply_text(const Mesh& mesh) {
                   std::to_string(mesh.face_count()) + "\nproperty list uchar int vertex_indices\nend_header\n";
   char buffer[128];
   for (int v = 0; v < mesh.vertex_count(); ++v) {
-    std::snprintf(buffer, sizeof buffer, "%.9g %.9g %.9g\n", mesh.V(v, 0), mesh.V(v, 1), mesh.V(v, 2));
+    std::snprintf(buffer, sizeof buffer, "%.17g %.17g %.17g\n", mesh.V(v, 0), mesh.V(v, 1), mesh.V(v, 2));
     s += buffer;
   }
   for (int f = 0; f < mesh.face_count(); ++f)
@@ -98,7 +98,7 @@ inline std::string off_text(const Mesh& mesh) {
   std::string s = "OFF\n" + std::to_string(mesh.vertex_count()) + " " + std::to_string(mesh.face_count()) + " 0\n";
   char buffer[128];
   for (int v = 0; v < mesh.vertex_count(); ++v) {
-    std::snprintf(buffer, sizeof buffer, "%.9g %.9g %.9g\n", mesh.V(v, 0), mesh.V(v, 1), mesh.V(v, 2));
+    std::snprintf(buffer, sizeof buffer, "%.17g %.17g %.17g\n", mesh.V(v, 0), mesh.V(v, 1), mesh.V(v, 2));
     s += buffer;
   }
   for (int f = 0; f < mesh.face_count(); ++f)

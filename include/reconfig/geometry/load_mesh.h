@@ -9,7 +9,8 @@
 
 namespace reconfig::geometry {
 
-/// Reads the triangle mesh in `path`: OFF with our own reader, every other format with Assimp.
+/// Reads the triangle mesh in `path`: OFF and PLY with our own readers, every other format
+/// (OBJ, STL, glTF/GLB, ...) with Assimp.
 ///
 /// Polygons are triangulated; every mesh of a multi-mesh scene is placed by its node transforms
 /// (a mirroring transform flips the faces so they stay outward) and all are merged into one
@@ -19,16 +20,19 @@ namespace reconfig::geometry {
 /// are, degenerate or not: `check_mesh` reports them.
 ///
 /// Vertices no face uses are dropped; the others keep their file order where the format has
-/// shared vertices (OFF), and come in order of first use by the faces otherwise (Assimp's
+/// shared vertices (OFF, PLY), and come in order of first use by the faces otherwise (Assimp's
 /// importers store one vertex per face corner).
 ///
-/// Precision: OFF coordinates are read exactly as doubles. Assimp reads coordinates in single
-/// precision: for every other format a loaded coordinate is the `float` nearest to the file's.
+/// Precision: OFF and PLY coordinates are read exactly (text as the nearest double). Assimp
+/// reads coordinates in single precision: for the other formats a loaded coordinate is a
+/// `float` (for text, within an ulp of the nearest float: Assimp's parser is not correctly
+/// rounded).
 ///
-/// Why OFF is ours: Assimp 5.2's OFF importer silently drops polygons with more than nine
-/// corners and clamps out-of-range or negative indices. Ours reports them (location
-/// `line <n>, face <i>`), ignores per-vertex and per-face colors, and triangulates concave
-/// polygons by ear clipping.
+/// Why OFF and PLY are ours: Assimp 5.2's OFF importer silently drops polygons with more than
+/// nine corners and clamps out-of-range or negative indices; its PLY importer loops forever
+/// on some truncated headers. Ours report such errors (locations `line <n>, face <i>`,
+/// `header line <n>`, `vertex <i>`, `face <i>`), and triangulate concave polygons by ear
+/// clipping.
 ///
 /// @param path  the file; the format is chosen from its extension, then its content
 /// @return the mesh (#V×3 positions, #F×3 triangles with indices in [0, #V))

@@ -65,7 +65,7 @@ bool ends_with_off(std::string_view token) {
 
 }  // namespace
 
-OffContent read_off(const std::string& bytes) {
+RawMesh read_off(const std::string& bytes) {
   Lines lines(bytes);
   std::vector<std::string_view> tokens;
   if (!lines.next(tokens)) throw InputError("", "", "empty OFF file");
@@ -89,7 +89,7 @@ OffContent read_off(const std::string& bytes) {
       vertex_count > 0x7fffffff || face_count > 0x7fffffff)
     throw InputError("", lines.where(), "expected the vertex and face counts");
 
-  OffContent content;
+  RawMesh content;
   // Never trust the header for the allocation: each vertex needs at least 6 bytes.
   content.positions.reserve(static_cast<std::size_t>(std::min<long long>(vertex_count, static_cast<long long>(bytes.size() / 6))));
   for (long long v = 0; v < vertex_count; ++v) {

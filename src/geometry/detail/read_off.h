@@ -4,17 +4,11 @@
 /// polygons with more than 9 corners and clamps out-of-range or negative indices to valid ones;
 /// this one reports them, and reads coordinates in double precision.
 
-#include <Eigen/Core>
 #include <string>
-#include <vector>
+
+#include "geometry/detail/raw_mesh.h"
 
 namespace reconfig::geometry::detail {
-
-/// Raw content of an OFF file.
-struct OffContent {
-  std::vector<Eigen::Vector3d> positions;  ///< the vertices, in file order
-  std::vector<Eigen::Vector3i> triangles;  ///< polygons split into triangles, indices in range
-};
 
 /// Parses ASCII OFF (header keyword `OFF` with optional ST/C/N prefixes, `#` comments, one
 /// vertex per line with extra values such as colors ignored, one polygon per line as a corner
@@ -22,6 +16,6 @@ struct OffContent {
 /// skipped; larger ones are triangulated.
 /// @throws InputError (empty file name; location `line <n>`) on malformed content, an index out
 ///   of range, or a non-finite coordinate
-OffContent read_off(const std::string& bytes);
+RawMesh read_off(const std::string& bytes);
 
 }  // namespace reconfig::geometry::detail

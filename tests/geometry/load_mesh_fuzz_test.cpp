@@ -1,0 +1,183 @@
+// Fuzzing the loaders: mutated and truncated versions of valid files must either load as a
+// valid-index mesh or throw InputError; never crash, hang, or throw anything else.
+// The default run takes about two seconds. For a longer campaign:
+//   RECONFIG_FUZZ_TRIALS=100000 RECONFIG_FUZZ_SEED=7 geometry_tests --gtest_filter='LoadMeshFuzz.*'
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "mesh_test_helpers.h"
+#include "reconfig/common/input_error.h"
+#include "reconfig/geometry/load_mesh.h"
+#include "reconfig/geometry/mesh_check.h"
+#include "reconfig/geometry/primitives.h"
+#include "reconfig/geometry/save_mesh.h"
+#include "support/test_data.h"
+
+namespace reconfig::geometry {
+namespace {
+
+struct Seed {
+  std::string extension;
+  std::string bytes;
+};
+
+std::vector<Seed> seeds() {
+  const Mesh box = make_box({1, 2, 3});
+  const Mesh sphere = make_sphere(1, 1);
+  const auto dir = reconfig::testing::fresh_temp_dir();
+  std::vector<Seed> out;
+  save_obj(dir / "s.obj", sphere);
+  out.push_back({"obj", testing::read_bytes((dir / "s.obj").string())});
+  out.push_back({"obj",
+                 "# quads, normals, texture coordinates, groups\no box\nv -1 -1 -1\nv 1 -1 -1\nv -1 1 -1\nv 1 1 -1\n"
+                 "v -1 -1 1\nv 1 -1 1\nv -1 1 1\nv 1 1 1\nvt 0 0\nvt 1 0\nvt 1 1\nvn 0 0 -1\nvn 0 0 1\n"
+                 "g bottom\nf 1/1/1 3/2/1 4/3/1 2/1/1\ng top\nf 5/1/2 6/2/2 8/3/2 7/1/2\nf 1//1 2//1 6//1 5//1\n"
+                 "f -6 -2 -1 -5\nf 1 5 7 3\nf 2 4 8 6\n"});
+  save_stl(dir / "b.stl", box, true);
+  out.push_back({"stl", testing::read_bytes((dir / "b.stl").string())});
+  save_stl(dir / "a.stl", box, false);
+  out.push_back({"stl", testing::read_bytes((dir / "a.stl").string())});
+  out.push_back({"ply", testing::ply_text(box)});
+  {  // binary PLY with a quad, an extra property and an extra element
+    std::string ply = "ply\nformat binary_little_endian 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+                      "property float z\nproperty uchar red\nelement face 2\nproperty list uchar int vertex_indices\n"
+                      "element edge 1\nproperty int a\nproperty int b\nend_header\n";
+    const float corners[4][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 0, 1}};
+    for (const auto& c : corners) {
+      ply.append(reinterpret_cast<const char*>(c), sizeof c);
+      ply.push_back(static_cast<char>(200));
+    }
+    const std::int32_t quad[4] = {0, 1, 2, 3}, tri[3] = {0, 2, 1};
+    ply.push_back(4);
+    ply.append(reinterpret_cast<const char*>(quad), sizeof quad);
+    ply.push_back(3);
+    ply.append(reinterpret_cast<const char*>(tri), sizeof tri);
+    const std::int32_t edge[2] = {0, 1};
+    ply.append(reinterpret_cast<const char*>(edge), sizeof edge);
+    out.push_back({"ply", ply});
+  }
+  out.push_back({"off", testing::off_text(sphere)});
+  out.push_back({"off", "COFF 4 4 0\n0 0 0 1 0 0 1\n1 0 0 0 1 0 1\n0 1 0 0 0 1 1\n0 0 1 1 1 1 1\n"
+                        "3 0 2 1\n3 0 1 3\n3 0 3 2\n4 1 2 3 0\n"});
+  return out;
+}
+
+std::string mutate(const std::string& original, std::mt19937& rng) {
+  std::string s = original;
+  auto pick = [&](std::size_t n) { return n == 0 ? std::size_t{0} : static_cast<std::size_t>(rng() % n); };
+  static const std::vector<std::string> tokens = {"-1",   "0",    "4294967295", "99999999999", "1e308", "-1e400",
+                                                  "nan",  "inf",  "#",          "\n",          " ",     "/",
+                                                  "f",    "v",    "3",          "255",         "-",     ".",
+                                                  "\0",   "end_header\n", "endsolid", "facet normal", "OFF", "vn"};
+  const int edits = 1 + static_cast<int>(rng() % 4);
+  for (int e = 0; e < edits; ++e) {
+    switch (rng() % 7) {
+      case 0:  // random byte
+        if (!s.empty()) s[pick(s.size())] = static_cast<char>(rng() & 0xff);
+        break;
+      case 1:  // flip one bit
+        if (!s.empty()) s[pick(s.size())] ^= static_cast<char>(1 << (rng() % 8));
+        break;
+      case 2:  // truncate
+        s.resize(pick(s.size() + 1));
+        break;
+      case 3: {  // delete a range
+        const std::size_t at = pick(s.size() + 1), length = pick(std::min<std::size_t>(64, s.size() - at + 1));
+        s.erase(at, length);
+        break;
+      }
+      case 4: {  // duplicate a range
+        const std::size_t at = pick(s.size() + 1), length = pick(std::min<std::size_t>(64, s.size() - at + 1));
+        s.insert(pick(s.size() + 1), s.substr(at, length));
+        break;
+      }
+      default: {  // insert or overwrite with a token that parsers find interesting
+        const std::string& token = tokens[pick(tokens.size())];
+        const std::size_t at = pick(s.size() + 1);
+        if (rng() % 2) {
+          s.insert(at, token);
+        } else {
+          s.replace(at, std::min(token.size(), s.size() - at), token);
+        }
+        break;
+      }
+    }
+  }
+  return s;
+}
+
+/// Loads `bytes`; fails the test unless it is a valid-index mesh or an InputError. Returns
+/// whether it loaded.
+bool expect_mesh_or_input_error(const std::string& bytes, const std::string& extension, int trial) {
+  try {
+    const Mesh mesh = load_mesh_from_memory(bytes, extension);
+    EXPECT_GT(mesh.face_count(), 0) << "trial " << trial;
+    EXPECT_TRUE(mesh.V.allFinite()) << "trial " << trial;
+    EXPECT_TRUE((mesh.F.array() >= 0).all() && (mesh.F.array() < mesh.vertex_count()).all()) << "trial " << trial;
+    MeshCheckOptions options;
+    options.check_self_intersections = trial % 16 == 0;
+    const MeshReport report = check_mesh(mesh, options);
+    EXPECT_FALSE(report.out_of_range_faces.any());
+    EXPECT_FALSE(report.summary().empty());
+    return true;
+  } catch (const InputError&) {
+    return false;  // expected for most mutations
+  } catch (const std::exception& e) {
+    ADD_FAILURE() << "trial " << trial << " (" << extension << "): not an InputError: " << e.what();
+    return false;
+  }
+}
+
+TEST(LoadMeshFuzz, MutatedFilesLoadOrThrowInputError) {
+  const std::vector<Seed> all = seeds();
+  for (const Seed& seed : all) ASSERT_NO_THROW(load_mesh_from_memory(seed.bytes, seed.extension)) << seed.extension;
+  std::mt19937 rng(std::getenv("RECONFIG_FUZZ_SEED") ? std::atoi(std::getenv("RECONFIG_FUZZ_SEED")) : 12345);
+  const auto start = std::chrono::steady_clock::now();
+  int trials = 0, loaded = 0;
+  const int max_trials = std::getenv("RECONFIG_FUZZ_TRIALS") ? std::atoi(std::getenv("RECONFIG_FUZZ_TRIALS")) : 4000;
+  for (; trials < max_trials; ++trials) {
+    const Seed& seed = all[static_cast<std::size_t>(trials) % all.size()];
+    const std::string bytes = mutate(seed.bytes, rng);
+    try {
+      loaded += expect_mesh_or_input_error(bytes, seed.extension, trials);
+      if (::testing::Test::HasFailure()) return;
+    } catch (...) {
+      FAIL() << "trial " << trials << " threw out of the checker";
+    }
+    if (!std::getenv("RECONFIG_FUZZ_TRIALS") && std::chrono::steady_clock::now() - start > std::chrono::milliseconds(2000)) break;
+  }
+  std::printf("[ fuzz     ] %d mutated files, %d loaded as meshes\n", trials, loaded);
+  EXPECT_GE(trials, 1000) << "the loaders are too slow to fuzz enough in the time budget";
+}
+
+TEST(LoadMeshFuzz, EveryTruncationOfEachSeed) {
+  for (const Seed& seed : seeds()) {
+    const std::size_t step = std::max<std::size_t>(1, seed.bytes.size() / 80);
+    for (std::size_t length = 0; length < seed.bytes.size(); length += step) {
+      expect_mesh_or_input_error(seed.bytes.substr(0, length), seed.extension, static_cast<int>(length));
+      if (::testing::Test::HasFailure()) return;
+    }
+  }
+}
+
+TEST(LoadMeshFuzz, WrongExtensionHintsAreHandled) {
+  const std::vector<Seed> all = seeds();
+  int trial = 0;
+  for (const Seed& seed : all)
+    for (const char* hint : {"obj", "stl", "ply", "off", "glb", "gltf", "xyz", ""}) {
+      expect_mesh_or_input_error(seed.bytes, hint, trial++);
+      if (::testing::Test::HasFailure()) return;
+    }
+}
+
+}  // namespace
+}  // namespace reconfig::geometry
