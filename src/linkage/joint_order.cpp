@@ -106,7 +106,7 @@ class Orderer {
       if (known_[n]) known_neighbours.push_back(n);
     if (known_neighbours.size() < 2) return false;
     // The best-conditioned reconstruction triangle: largest sin² of the angle at k.
-    int best_i = -1, best_j = -1;
+    int best_i = known_neighbours[0], best_j = known_neighbours[1];
     double best_quality = -1;
     for (std::size_t a = 0; a < known_neighbours.size(); ++a)
       for (std::size_t b = a + 1; b < known_neighbours.size(); ++b) {

@@ -41,7 +41,8 @@ struct Parser {
     for (int c = 0; c < 2; ++c) {
       if (!value[c].is_number()) fail(location + "[" + std::to_string(c) + "]", "expected a number");
       p[c] = value[c].get<double>();
-      if (!std::isfinite(p[c])) fail(location + "[" + std::to_string(c) + "]", "not a finite number");
+      // Squared lengths must stay finite and meaningful: keep coordinates below 1e12.
+      if (!(std::abs(p[c]) <= 1e12)) fail(location + "[" + std::to_string(c) + "]", "coordinate out of range (|x| > 1e12)");
     }
     return p;
   }
@@ -57,7 +58,7 @@ struct Parser {
     json doc;
     try {
       doc = json::parse(text);
-    } catch (const json::parse_error& error) {
+    } catch (const json::exception& error) {  // parse_error, and out_of_range for huge numbers
       fail("", std::string("not valid JSON: ") + error.what());
     }
     if (!doc.is_object()) fail("", "expected a JSON object");

@@ -79,6 +79,8 @@ TEST(LinkageFile, EveryErrorNamesItsPlace) {
       {with("\"name\": \"B\"", "\"name\": \"\""), {"joints[1].name", "empty joint name"}},
       {with("[1, 0]", "[1]"), {"joints[1].position", "expected a point [x, y]"}},
       {with("[1, 0]", "[1, \"x\"]"), {"joints[1].position[1]", "expected a number"}},
+      {with("[1, 0]", "[1e300, 0]"), {"joints[1].position[0]", "out of range"}},
+      {with("[1, 0]", "[1, 1e999]"), {"", "not valid JSON"}},
       {with("\"fixed\": true", "\"fixed\": 1"), {"joints[0].fixed", "expected true or false"}},
       {with("[\"B\", \"C\"]", "[\"B\"]"), {"links[1]", "two or more joints"}},
       {with("[\"B\", \"C\"]", "[\"B\", \"Q\"]"), {"links[1][1]", "unknown joint \"Q\""}},

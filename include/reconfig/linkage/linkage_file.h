@@ -11,8 +11,8 @@ namespace reconfig::linkage {
 
 /// Parses and validates a linkage from JSON text.
 ///
-/// Checks: format and version; every joint has a unique non-empty name and a finite
-/// position [x, y]; every link lists two or more distinct known joints at distinct
+/// Checks: format and version; every joint has a unique non-empty name and a position
+/// [x, y] with |x|, |y| ≤ 1e12; every link lists two or more distinct known joints at distinct
 /// positions; every joint that is not fixed lies on a link; the motor's center is fixed,
 /// its joint is not, and a link (the crank) carries both; tracking points name known joints.
 /// It does not check that the linkage is fully constrained (see order_joints).
