@@ -50,9 +50,15 @@ std::string edge_text(const MeshEdge& e) { return std::to_string(e[0]) + "\u2013
 std::string pair_text(const FacePair& p) { return std::to_string(p[0]) + "\u00d7" + std::to_string(p[1]); }
 std::string index_text(int i) { return std::to_string(i); }
 
+/// "1 triangle", "2 triangles".
+std::string count_of(int count, const std::string& singular, const std::string& plural) {
+  return std::to_string(count) + " " + (count == 1 ? singular : plural);
+}
+
 template <class Element, class Format>
-std::string describe(const MeshFindings<Element>& findings, const std::string& what, Format format) {
-  std::string text = std::to_string(findings.count) + " " + what;
+std::string describe(const MeshFindings<Element>& findings, const std::string& singular, const std::string& plural,
+                     Format format) {
+  std::string text = count_of(findings.count, singular, plural);
   if (!findings.examples.empty()) {
     text += " (e.g. ";
     const std::size_t shown = std::min<std::size_t>(findings.examples.size(), 3);
@@ -78,25 +84,25 @@ bool MeshReport::is_valid_solid() const {
 std::string MeshReport::summary() const {
   std::vector<std::string> parts;
   if (face_count == 0) parts.push_back("no triangles");
-  if (out_of_range_faces.any()) parts.push_back(describe(out_of_range_faces, "faces with out-of-range indices", index_text));
-  if (non_finite_vertices.any()) parts.push_back(describe(non_finite_vertices, "vertices with NaN/infinite coordinates", index_text));
-  if (boundary_edges.any()) parts.push_back("open: " + describe(boundary_edges, "boundary edges", edge_text));
-  if (non_manifold_edges.any()) parts.push_back(describe(non_manifold_edges, "non-manifold edges", edge_text));
-  if (non_manifold_vertices.any()) parts.push_back(describe(non_manifold_vertices, "non-manifold vertices", index_text));
-  if (inconsistent_edges.any()) parts.push_back(describe(inconsistent_edges, "inconsistently oriented edges", edge_text));
-  if (degenerate_faces.any()) parts.push_back(describe(degenerate_faces, "degenerate triangles", index_text));
+  if (out_of_range_faces.any()) parts.push_back(describe(out_of_range_faces, "face with out-of-range indices", "faces with out-of-range indices", index_text));
+  if (non_finite_vertices.any()) parts.push_back(describe(non_finite_vertices, "vertex with NaN/infinite coordinates", "vertices with NaN/infinite coordinates", index_text));
+  if (boundary_edges.any()) parts.push_back("open: " + describe(boundary_edges, "boundary edge", "boundary edges", edge_text));
+  if (non_manifold_edges.any()) parts.push_back(describe(non_manifold_edges, "non-manifold edge", "non-manifold edges", edge_text));
+  if (non_manifold_vertices.any()) parts.push_back(describe(non_manifold_vertices, "non-manifold vertex", "non-manifold vertices", index_text));
+  if (inconsistent_edges.any()) parts.push_back(describe(inconsistent_edges, "inconsistently oriented edge", "inconsistently oriented edges", edge_text));
+  if (degenerate_faces.any()) parts.push_back(describe(degenerate_faces, "degenerate triangle", "degenerate triangles", index_text));
   if (self_intersections.any())
     parts.push_back((self_intersections_truncated ? "at least " : "") +
-                    describe(self_intersections, "self-intersecting triangle pairs", pair_text));
+                    describe(self_intersections, "self-intersecting triangle pair", "self-intersecting triangle pairs", pair_text));
   if (face_count > 0 && is_closed() && is_oriented() && !non_finite_vertices.any() && !is_outward())
     parts.push_back(signed_volume < 0 ? "inside out (negative volume)" : "zero volume");
   if (parts.empty()) {
-    std::string text = "closed, manifold, " + std::to_string(face_count) + " triangles";
-    if (component_count > 1) text += ", " + std::to_string(component_count) + " components";
+    std::string text = "closed, manifold, " + count_of(face_count, "triangle", "triangles");
+    if (component_count > 1) text += ", " + count_of(component_count, "component", "components");
     if (!self_intersections_checked) text += ", self-intersections not checked";
     return text;
   }
-  if (face_count > 0) parts.push_back(std::to_string(face_count) + " triangles");
+  if (face_count > 0) parts.push_back(count_of(face_count, "triangle", "triangles"));
   if (!self_intersections_checked) parts.push_back("self-intersections not checked");
   std::string text;
   for (std::size_t i = 0; i < parts.size(); ++i) text += (i ? "; " : "") + parts[i];

@@ -179,6 +179,59 @@ TEST(CheckMesh, ExamplesAreCappedButCountsAreNot) {
   EXPECT_EQ(report.boundary_edges.examples.size(), 2u);
 }
 
+// --- Self-intersections (found by find_self_intersections) ----------------------------------
+
+TEST(CheckMesh, InterpenetratingBoxesSelfIntersect) {
+  const Mesh a = make_box({1, 1, 1});
+  const Mesh both = two_meshes(a, translated(a, {0.5, 0.25, 0.125}));
+  const MeshReport report = check_mesh(both);
+  ASSERT_TRUE(report.self_intersections_checked);
+  EXPECT_TRUE(report.is_closed());
+  EXPECT_TRUE(report.is_manifold());
+  EXPECT_TRUE(report.is_oriented());
+  EXPECT_TRUE(report.self_intersections.any());
+  EXPECT_FALSE(report.self_intersections_truncated);
+  EXPECT_FALSE(report.is_valid_solid());
+  for (const FacePair& pair : report.self_intersections.examples) {
+    EXPECT_LT(pair[0], pair[1]);
+    EXPECT_LT(pair[0], 12);  // one face of each box
+    EXPECT_GE(pair[1], 12);
+  }
+  EXPECT_NE(report.summary().find("self-intersecting triangle pairs (e.g. "), std::string::npos) << report.summary();
+
+  // Apart, they are a valid two-component solid.
+  EXPECT_TRUE(check_mesh(two_meshes(a, translated(a, {1.5, 0, 0}))).is_valid_solid());
+
+  // A cap of 0 pairs only tells whether there is any.
+  MeshCheckOptions first_only;
+  first_only.max_self_intersection_pairs = 0;
+  const MeshReport any = check_mesh(both, first_only);
+  EXPECT_EQ(any.self_intersections.count, 1);
+  EXPECT_TRUE(any.self_intersections_truncated);
+  EXPECT_NE(any.summary().find("at least 1 self-intersecting triangle pair;"), std::string::npos) << any.summary();
+
+  // Faces left out for bad indices do not shift the reported face numbers.
+  Mesh with_bad_face = both;
+  with_bad_face.F.conservativeResize(both.face_count() + 1, 3);
+  with_bad_face.F.bottomRows(both.face_count()) = both.F;
+  with_bad_face.F.row(0) << 0, 1, 99;
+  const MeshReport shifted = check_mesh(with_bad_face);
+  ASSERT_EQ(shifted.self_intersections.count, report.self_intersections.count);
+  for (std::size_t i = 0; i < report.self_intersections.examples.size(); ++i)
+    EXPECT_EQ(shifted.self_intersections.examples[i],
+              (FacePair{report.self_intersections.examples[i][0] + 1, report.self_intersections.examples[i][1] + 1}));
+}
+
+TEST(CheckMesh, CancelledSelfIntersectionSearchIsReportedAsNotChecked) {
+  const Mesh a = make_sphere(1, 3);
+  MeshCheckOptions options;
+  options.progress = [](double) { return false; };
+  const MeshReport report = check_mesh(two_meshes(a, translated(a, {0.5, 0, 0})), options);
+  EXPECT_FALSE(report.self_intersections_checked);
+  EXPECT_FALSE(report.self_intersections.any());
+  EXPECT_NE(report.summary().find("self-intersections not checked"), std::string::npos);
+}
+
 // --- Oracle: the edge and vertex classification against a brute-force map-based count. -------
 
 struct BruteForce {
@@ -279,14 +332,29 @@ TEST(CheckMesh, NeverCrashesOnRandomGarbage) {
 // --- Real meshes ----------------------------------------------------------------------------
 
 TEST(CheckMesh, ClosedCgalMeshesAreValidSolids) {
-  for (const char* name : {"cube.off", "elephant.off", "fandisk.off", "knot1.off"}) {
+  for (const char* name : {"cube.off", "elephant.off", "fandisk.off", "knot1.off", "bunny00.off"}) {
     SCOPED_TRACE(name);
     const MeshReport report = check_mesh(load_mesh(reconfig::testing::cgal_mesh(name)));
-    EXPECT_TRUE(report.is_closed()) << report.summary();
-    EXPECT_TRUE(report.is_manifold()) << report.summary();
-    EXPECT_TRUE(report.is_oriented()) << report.summary();
-    EXPECT_TRUE(report.is_outward()) << report.summary();
+    EXPECT_TRUE(report.is_valid_solid()) << report.summary();
+    EXPECT_TRUE(report.self_intersections_checked);
+    EXPECT_EQ(report.component_count, 1);
   }
+}
+
+TEST(CheckMesh, BrokenCgalMeshesReportWhatIsWrong) {
+  auto check = [](const char* name) { return check_mesh(load_mesh(reconfig::testing::cgal_mesh(name))); };
+  const MeshReport shuffled = check("cube-shuffled.off");  // faces flipped at random
+  EXPECT_TRUE(shuffled.is_closed());
+  EXPECT_FALSE(shuffled.is_oriented());
+  const MeshReport inverted = check("tetrahedron.off");  // consistently inward
+  EXPECT_TRUE(inverted.is_oriented());
+  EXPECT_FALSE(inverted.is_outward());
+  EXPECT_EQ(inverted.summary(), "inside out (negative volume); 4 triangles");
+  const MeshReport pierced = check("tetra_intersected_by_triangle.off");
+  EXPECT_EQ(pierced.self_intersections.count, 1);
+  EXPECT_EQ(pierced.boundary_edges.count, 3);  // the loose triangle
+  const MeshReport sliding = check("degtri_sliding.off");
+  EXPECT_TRUE(sliding.degenerate_faces.any());
 }
 
 TEST(CheckMesh, OpenCgalMeshesReportTheirHoles) {
