@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <numbers>
 
+#include "reconfig/linkage/linkage_edit.h"
 #include "reconfig/linkage/linkage_file.h"
 #include "reconfig/linkage/newton_kinematics.h"
 #include "reconfig/linkage/symbolic_kinematics.h"
@@ -69,6 +70,36 @@ void BM_CycleWithDerivatives(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_CycleWithDerivatives)->Arg(3)->Arg(10)->Unit(benchmark::kMillisecond);
+
+// One evaluation of the edit energy and its gradient (72 samples: trajectory of every foot,
+// envelope, regularization, singularity barrier) — what one L-BFGS step costs.
+void BM_EditEnergyGradient(benchmark::State& state) {
+  const Linkage linkage = strandbeest(static_cast<int>(state.range(0)));
+  EditSettings settings;
+  const std::vector<double> angles = edit_sample_angles(linkage, settings.samples);
+  EditObjectives objectives;
+  for (const TrackingPoint& point : linkage.tracking_points)
+    objectives.trajectories.push_back({point.joint, joint_trajectory(linkage, point.joint, angles), 1.0});
+  objectives.envelope = EditObjectives::Envelope{{-150, -100}, {150, 60}, 1.0};
+  const Eigen::Matrix2Xd X0 = linkage.initial_positions();
+  Eigen::Matrix2Xd G;
+  for (auto _ : state) benchmark::DoNotOptimize(edit_energy(linkage, objectives, settings, X0, &G));
+}
+BENCHMARK(BM_EditEnergyGradient)->Arg(3)->Arg(10)->Unit(benchmark::kMillisecond);
+
+// A whole edit of the Jansen leg: drag the upper joint, keep the foot path.
+void BM_EditJansenDrag(benchmark::State& state) {
+  const auto dir = std::filesystem::path(__FILE__).parent_path().parent_path() / "examples" / "linkages";
+  const Linkage linkage = read_linkage(dir / "jansen.json");
+  const int upper = linkage.find_joint("U"), foot = linkage.find_joint("P");
+  EditObjectives objectives;
+  objectives.drags.push_back({upper, {-30, 35}, std::nullopt, 1.0});
+  objectives.trajectories.push_back({foot, joint_trajectory(linkage, foot, edit_sample_angles(linkage, 72)), 10.0});
+  EditSettings settings;
+  settings.max_iterations = 50;
+  for (auto _ : state) benchmark::DoNotOptimize(edit_linkage(linkage, objectives, settings).energy_after);
+}
+BENCHMARK(BM_EditJansenDrag)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -8,6 +8,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <numbers>
+#include <optional>
 
 #include "command.h"
 #include "reconfig/common/input_error.h"
@@ -106,6 +107,7 @@ struct EditOptions {
   std::vector<std::vector<std::string>> drags;
   std::vector<std::string> keep;
   std::vector<double> envelope;
+  std::optional<double> at;  // degrees: drag joints of the configuration at this motor angle
   int samples = 72, iterations = 200;
 };
 
@@ -137,8 +139,13 @@ int run_edit(const EditOptions& options) {
   for (const auto& drag : options.drags) {
     if (drag.size() != 3) throw InputError("", "--drag", "expected JOINT X Y");
     const int joint = joint_or_tracking_point(linkage, options.file, drag[0]);
+    std::optional<double> angle;
+    if (options.at) {
+      const SymbolicKinematics kinematics(linkage, order_joints(linkage));
+      angle = reachable_angle(options.file, motion_range(kinematics), kinematics.initial_angle(), *options.at);
+    }
     objectives.drags.push_back(
-        {joint, {parse_number(drag[1], "--drag X"), parse_number(drag[2], "--drag Y")}, std::nullopt, 1.0});
+        {joint, {parse_number(drag[1], "--drag X"), parse_number(drag[2], "--drag Y")}, angle, 1.0});
   }
   const std::vector<double> angles = edit_sample_angles(linkage, settings.samples);
   for (const std::string& name : options.keep) {
@@ -158,10 +165,17 @@ int run_edit(const EditOptions& options) {
   fmt::print("energy {:.6g} -> {:.6g} ({} L-BFGS iterations, {}{})\n", result.energy_before, result.energy_after,
              result.iterations, result.status,
              result.shortened ? fmt::format(", step halved {}× to keep the motion working", result.shortened) : "");
-  for (const auto& drag : objectives.drags)
-    fmt::print("drag {}: {:.6g} -> {:.6g} from the target\n", linkage.joints[drag.joint].name,
-               (linkage.joints[drag.joint].position - drag.target).norm(),
-               (result.linkage.joints[drag.joint].position - drag.target).norm());
+  for (const auto& drag : objectives.drags) {
+    auto position = [&](const Linkage& which) -> Eigen::Vector2d {
+      if (!drag.angle) return which.joints[drag.joint].position;
+      Eigen::Matrix2Xd X;
+      SymbolicKinematics(which, order_joints(which)).solve(*drag.angle, X);
+      return X.col(drag.joint);
+    };
+    fmt::print("drag {}{}: {:.6g} -> {:.6g} from the target\n", linkage.joints[drag.joint].name,
+               drag.angle ? fmt::format(" at {}°", *options.at) : "", (position(linkage) - drag.target).norm(),
+               (position(result.linkage) - drag.target).norm());
+  }
   for (const auto& trajectory : objectives.trajectories) {
     const auto after = joint_trajectory(result.linkage, trajectory.joint, angles);
     double worst = 0;
@@ -230,6 +244,7 @@ void add_linkage_command(CLI::App& app, int& exit_code) {
   ed->add_option("--drag", edit->drags, "Move a joint of the initial configuration towards X Y")
       ->expected(3)
       ->type_name("JOINT X Y");
+  ed->add_option("--at", edit->at, "Drag in the configuration at this motor angle (degrees), not the initial one");
   ed->add_option("--keep-trajectory", edit->keep, "Keep the motion curve of this tracking point (or joint)");
   ed->add_option("--envelope", edit->envelope, "Keep every joint inside this box over the motion")
       ->expected(4)

@@ -39,9 +39,9 @@ SymbolicKinematics::SymbolicKinematics(const Linkage& linkage, JointOrder order)
   for (std::size_t r = 0; r < order_.rules.size(); ++r)
     if (order_.rules[r].kind == RuleKind::kTriangle) triangle_rules_.push_back(static_cast<int>(r));
   std::string error;
-  if (!compute_constants(linkage_.initial_positions(), constants_, &error)) {
-    throw InputError("", "joints", error);
-  }
+  int joint = -1;
+  if (!compute_constants(linkage_.initial_positions(), constants_, &error, &joint))
+    throw InputError("", "joints[" + std::to_string(joint) + "]", error);
   X0_ = linkage_.initial_positions();
   angle0_ = linkage_.initial_motor_angle();
   build_dependencies();
@@ -51,7 +51,7 @@ SymbolicKinematics::SymbolicKinematics(const Linkage& linkage, JointOrder order)
 }
 
 bool SymbolicKinematics::compute_constants(const Eigen::Matrix2Xd& X0, std::vector<Constants>& constants,
-                                           std::string* error) const {
+                                           std::string* error, int* joint) const {
   constants.assign(order_.rules.size(), Constants{});
   for (std::size_t r = 0; r < order_.rules.size(); ++r) {
     const Rule& rule = order_.rules[r];
@@ -73,6 +73,7 @@ bool SymbolicKinematics::compute_constants(const Eigen::Matrix2Xd& X0, std::vect
           if (error)
             *error = "joint \"" + linkage_.joints[rule.k].name + "\" is singular in the initial configuration: " +
                      describe_rule(linkage_, order_, rule) + " is a degenerate (collinear) triangle";
+          if (joint) *joint = rule.k;
           return false;
         }
         c.sign = orientation > 0 ? 1.0 : -1.0;
@@ -92,7 +93,7 @@ bool SymbolicKinematics::compute_constants(const Eigen::Matrix2Xd& X0, std::vect
 
 bool SymbolicKinematics::set_initial_positions(const Eigen::Matrix2Xd& X0) {
   std::vector<Constants> constants;
-  if (!compute_constants(X0, constants, nullptr)) return false;
+  if (!compute_constants(X0, constants, nullptr, nullptr)) return false;
   constants_.swap(constants);
   X0_ = X0;
   linkage_.set_initial_positions(X0);

@@ -124,6 +124,7 @@ TEST(LinkageFile, ReadRejectsUnderConstrainedAndSingularLinkages) {
     FAIL() << "no error";
   } catch (const InputError& error) {
     EXPECT_NE(error.message().find("singular in the initial configuration"), std::string::npos) << error.what();
+    EXPECT_EQ(error.location(), "joints[2]");
   }
   // An extra bar B–D locks the four-bar: |BD| changes as the crank turns.
   const std::string locked = with("[\"D\", \"C\"]]", "[\"D\", \"C\"], [\"B\", \"D\"]]");

@@ -76,7 +76,8 @@ class SymbolicKinematics {
 
  private:
   struct Constants;
-  bool compute_constants(const Eigen::Matrix2Xd& X0, std::vector<Constants>& constants, std::string* error) const;
+  bool compute_constants(const Eigen::Matrix2Xd& X0, std::vector<Constants>& constants, std::string* error,
+                         int* joint) const;
   bool solve_continued(double angle, Eigen::Matrix2Xd& X, StateDerivatives* D, ReconstructionFailure* failure) const;
   bool solve_once(double angle, Eigen::Matrix2Xd& X, StateDerivatives* D, ReconstructionFailure* failure) const;
   bool solve_block(int rule_index, Eigen::Matrix2Xd& X, StateDerivatives* D, ReconstructionFailure* failure) const;
