@@ -16,6 +16,7 @@
 #include <utility>
 #include <vector>
 
+#include "geometry/detail/read_obj.h"
 #include "geometry/detail/read_off.h"
 #include "geometry/detail/read_ply.h"
 #include "geometry/detail/weld_vertices.h"
@@ -110,10 +111,17 @@ Mesh scene_to_mesh(const aiScene& scene) {
   return out;
 }
 
-/// Reads OFF and PLY with our own readers (see load_mesh.h for why); nullopt for other formats.
+bool is_own_format(const std::string& extension) {
+  return extension == "obj" || extension == "off" || extension == "ply";
+}
+
+/// Reads OBJ, OFF and PLY with our own readers (see load_mesh.h for why); nullopt for other
+/// formats.
 std::optional<Mesh> read_own_format(const std::string& extension, const std::string& bytes) {
   detail::RawMesh content;
-  if (extension == "off")
+  if (extension == "obj")
+    content = detail::read_obj(bytes);
+  else if (extension == "off")
     content = detail::read_off(bytes);
   else if (extension == "ply")
     content = detail::read_ply(bytes);
@@ -162,7 +170,7 @@ Mesh load_mesh(const std::filesystem::path& path) {
   if (std::filesystem::is_directory(path, error)) throw InputError(path.string(), "", "is a folder, not a mesh file");
   try {
     const std::string extension = lower_extension(path.extension().string());
-    if (extension == "off" || extension == "ply") return *read_own_format(extension, read_file(path));
+    if (is_own_format(extension)) return *read_own_format(extension, read_file(path));
     Assimp::Importer& importer = thread_importer();
     return read_scene(importer, importer.ReadFile(path.string(), kImportFlags));
   } catch (const InputError& e) {

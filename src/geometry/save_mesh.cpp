@@ -43,7 +43,11 @@ void write_atomically(const fs::path& path, const std::function<void(std::ofstre
   }
 }
 
-void check_indices(const fs::path& path, const Mesh& mesh) {
+/// Refuses to write what `load_mesh` would refuse to read.
+void check_writable(const fs::path& path, const Mesh& mesh) {
+  for (int v = 0; v < mesh.vertex_count(); ++v)
+    if (!mesh.V.row(v).allFinite())
+      throw InputError(path.string(), "vertex " + std::to_string(v), "coordinate is NaN or infinite");
   for (int f = 0; f < mesh.face_count(); ++f)
     for (int k = 0; k < 3; ++k)
       if (mesh.F(f, k) < 0 || mesh.F(f, k) >= mesh.vertex_count())
@@ -81,7 +85,7 @@ std::string format_float(double value) {
 }  // namespace
 
 void save_obj(const fs::path& path, const Mesh& mesh) {
-  check_indices(path, mesh);
+  check_writable(path, mesh);
   write_atomically(path, [&](std::ofstream& out) {
     out << "# " << mesh.vertex_count() << " vertices, " << mesh.face_count() << " triangles\n";
     for (int v = 0; v < mesh.vertex_count(); ++v)
@@ -93,7 +97,7 @@ void save_obj(const fs::path& path, const Mesh& mesh) {
 }
 
 void save_stl(const fs::path& path, const Mesh& mesh, bool binary) {
-  check_indices(path, mesh);
+  check_writable(path, mesh);
   write_atomically(path, [&](std::ofstream& out) {
     if (binary) {
       std::array<char, 80> header{};

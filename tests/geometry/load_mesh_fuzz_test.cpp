@@ -68,6 +68,25 @@ std::vector<Seed> seeds() {
   out.push_back({"off", testing::off_text(sphere)});
   out.push_back({"off", "COFF 4 4 0\n0 0 0 1 0 0 1\n1 0 0 0 1 0 1\n0 1 0 0 0 1 1\n0 0 1 1 1 1 1\n"
                         "3 0 2 1\n3 0 1 3\n3 0 3 2\n4 1 2 3 0\n"});
+  {  // glTF with an embedded buffer: a tetrahedron placed by a node with a translation
+    const float positions[12] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
+    const std::uint16_t indices[12] = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3};
+    std::string buffer(reinterpret_cast<const char*>(positions), sizeof positions);
+    buffer.append(reinterpret_cast<const char*>(indices), sizeof indices);
+    static const char* table = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string base64;
+    for (std::size_t i = 0; i < buffer.size(); i += 3) {  // 72 bytes: no padding needed
+      const unsigned n = (static_cast<unsigned char>(buffer[i]) << 16) |
+                         (static_cast<unsigned char>(buffer[i + 1]) << 8) | static_cast<unsigned char>(buffer[i + 2]);
+      for (int k = 3; k >= 0; --k) base64 += table[(n >> (6 * k)) & 63];
+    }
+    out.push_back({"gltf", R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],
+"nodes":[{"mesh":0,"translation":[5,0,0]}],"meshes":[{"primitives":[{"attributes":{"POSITION":0},"indices":1}]}],
+"buffers":[{"byteLength":72,"uri":"data:application/octet-stream;base64,)" + base64 + R"("}],
+"bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":48},{"buffer":0,"byteOffset":48,"byteLength":24}],
+"accessors":[{"bufferView":0,"componentType":5126,"count":4,"type":"VEC3","min":[0,0,0],"max":[1,1,1]},
+{"bufferView":1,"componentType":5123,"count":12,"type":"SCALAR"}]})"});
+  }
   return out;
 }
 

@@ -90,6 +90,37 @@ TEST(LoadMesh, OutOfRangeIndexIsAnError) {
   EXPECT_EQ(error_of([&] { load_mesh(dir / "bad.off"); }).file(), (dir / "bad.off").string());
 }
 
+TEST(LoadMesh, ObjReaderHandlesTheUsualForms) {
+  // Corner forms v, v/vt, v//vn, v/vt/vn; negative (relative) indices; a continued line; a quad;
+  // ignored statements; CRLF line ends; extra vertex values (a color).
+  const std::string obj =
+      "mtllib parts.mtl\r\no tet\r\nv 0 0 0 1 0 0\r\nv 0.1 0 0\r\nv 0 0.1 0\r\nv 0 0 0.1\r\n"
+      "vt 0 0\r\nvn 0 0 1\r\ns off\r\nusemtl wood\r\n"
+      "f 1/1 3/1 2/1\r\nf 1//1 2//1 \\\r\n 4//1\r\nf -4/1/1 -1/1/1 -2/1/1\r\nf 2 3 4\r\nl 1 2\r\n"
+      "v 5 5 5\nv 6 5 5\nv 6 6 5\nv 5 6 5\nf -4 -3 -2 -1\n";
+  const Mesh mesh = load_mesh_from_memory(obj, "obj");
+  EXPECT_EQ(mesh.vertex_count(), 8);
+  EXPECT_EQ(mesh.face_count(), 6);
+  EXPECT_EQ(mesh.V(1, 0), 0.1);  // the double nearest to 0.1
+  const MeshReport report = check_mesh(mesh);
+  EXPECT_EQ(report.component_count, 2);
+  EXPECT_EQ(report.boundary_edges.count, 4);  // the square is open, the tetrahedron closed
+  EXPECT_TRUE(report.is_oriented());
+  Mesh tet = mesh;
+  tet.F = mesh.F.topRows(4);
+  EXPECT_NEAR(mass_properties(tet).volume, 1e-3 / 6, 1e-3 * 1e-12);
+
+  EXPECT_STREQ(error_of([] { load_mesh_from_memory("v 0 0 0\nv 1 0 0\nv 0 1 0\n\nf 1 2 0\n", "obj"); }).what(),
+               "line 5: vertex index 0 out of range (3 vertices so far)");
+  EXPECT_EQ(error_of([] { load_mesh_from_memory("v 0 0 0\nv 1 0 0\nv 0 1 0\nf -4 1 2\n", "obj"); }).location(),
+            "line 4");
+  EXPECT_EQ(error_of([] { load_mesh_from_memory("v 0 0 0\nv 1 0\n", "obj"); }).location(), "line 2");
+  EXPECT_EQ(error_of([] { load_mesh_from_memory("v 0 0 0\nv 1 0 inf\n", "obj"); }).location(), "line 2, vertex 2");
+  EXPECT_EQ(error_of([] { load_mesh_from_memory("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2\n", "obj"); }).location(), "line 4");
+  EXPECT_EQ(error_of([] { load_mesh_from_memory("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 x/1\n", "obj"); }).location(),
+            "line 4");
+}
+
 TEST(LoadMesh, OffReaderHandlesTheUsualVariants) {
   // Counts on the keyword line, comments, blank lines, colors after vertices and faces,
   // an edge and a point element to skip, exact doubles.
@@ -366,9 +397,9 @@ TEST(LoadMesh, CgalMeshesRoundTripThroughObjStlAndPly) {
     for (const char* file : {"m.obj", "m.stl", "a.stl", "m.ply"}) {
       SCOPED_TRACE(file);
       const Mesh back = load_mesh(dir / file);
-      // Our PLY reader is exact; Assimp reads floats, and its text parser may miss the nearest
-      // float by an ulp.
-      if (std::string(file) == "m.ply")
+      // Our OBJ and PLY readers are exact; Assimp reads STL as floats, and its text parser may
+      // miss the nearest float by an ulp.
+      if (std::string(file) == "m.ply" || std::string(file) == "m.obj")
         EXPECT_TRUE(same_mesh(back, original));
       else if (std::string(file) == "m.stl")
         EXPECT_TRUE(same_mesh(back, testing::rounded_to_float(original)));

@@ -9,30 +9,30 @@
 
 namespace reconfig::geometry {
 
-/// Reads the triangle mesh in `path`: OFF and PLY with our own readers, every other format
-/// (OBJ, STL, glTF/GLB, ...) with Assimp.
+/// Reads the triangle mesh in `path`: OBJ, OFF and PLY with our own readers, every other
+/// format (STL, glTF/GLB, and whatever else Assimp reads) with Assimp.
 ///
-/// Polygons are triangulated; every mesh of a multi-mesh scene is placed by its node transforms
-/// (a mirroring transform flips the faces so they stay outward) and all are merged into one
-/// mesh. Vertices at exactly the same position are welded into one, whatever their normals or
-/// texture coordinates, so a closed part stays closed even from formats that store one vertex
-/// per face corner (STL, OBJ with normals). Points and lines are ignored. Faces are kept as they
-/// are, degenerate or not: `check_mesh` reports them.
+/// Polygons are triangulated (ear clipping: concave polygons are fine); every mesh of a
+/// multi-mesh scene is placed by its node transforms (a mirroring transform flips the faces so
+/// they stay outward) and all are merged into one mesh. Vertices at exactly the same position
+/// are welded into one, whatever their normals or texture coordinates, so a closed part stays
+/// closed even from formats that store one vertex per face corner (STL, glTF with flat
+/// normals). Points and lines are ignored. Faces are kept as they are, degenerate or not:
+/// `check_mesh` reports them.
 ///
 /// Vertices no face uses are dropped; the others keep their file order where the format has
-/// shared vertices (OFF, PLY), and come in order of first use by the faces otherwise (Assimp's
-/// importers store one vertex per face corner).
+/// shared vertices (OBJ, OFF, PLY), and come in order of first use by the faces otherwise
+/// (Assimp's importers store one vertex per face corner).
 ///
-/// Precision: OFF and PLY coordinates are read exactly (text as the nearest double). Assimp
-/// reads coordinates in single precision: for the other formats a loaded coordinate is a
-/// `float` (for text, within an ulp of the nearest float: Assimp's parser is not correctly
-/// rounded).
+/// Precision: OBJ, OFF and PLY coordinates are read exactly (text as the nearest double), so
+/// `save_obj` then `load_mesh` gives back the same numbers. Assimp reads coordinates in single
+/// precision: for the other formats a loaded coordinate is a `float` (STL stores floats anyway).
 ///
-/// Why OFF and PLY are ours: Assimp 5.2's OFF importer silently drops polygons with more than
-/// nine corners and clamps out-of-range or negative indices; its PLY importer loops forever
-/// on some truncated headers. Ours report such errors (locations `line <n>, face <i>`,
-/// `header line <n>`, `vertex <i>`, `face <i>`), and triangulate concave polygons by ear
-/// clipping.
+/// Why our own readers: Assimp 5.2's OFF importer silently drops polygons with more than nine
+/// corners and clamps out-of-range or negative indices; its PLY importer loops forever on some
+/// truncated headers (found by the fuzz test); its OBJ importer reads floats, not correctly
+/// rounded. Ours report bad data with its place (`line <n>`, `header line <n>`, `vertex <i>`,
+/// `face <i>`).
 ///
 /// @param path  the file; the format is chosen from its extension, then its content
 /// @return the mesh (#V×3 positions, #F×3 triangles with indices in [0, #V))

@@ -16,7 +16,8 @@ namespace reconfig::geometry {
 /// positions round-trip exactly through a double-precision reader.
 /// @param path  the file to write (replaced if it exists)
 /// @param mesh  #V×3 positions, #F×3 triangles
-/// @throws InputError naming `path` if the file cannot be written
+/// @throws InputError naming `path` if the file cannot be written, or (nothing written) if a
+///   face index is out of range (`face <i>`) or a coordinate is not finite (`vertex <i>`)
 void save_obj(const std::filesystem::path& path, const Mesh& mesh);
 
 /// Writes `mesh` as an STL, binary (little-endian, 80-byte header) or ASCII ("solid reconfig").
@@ -27,7 +28,7 @@ void save_obj(const std::filesystem::path& path, const Mesh& mesh);
 /// @param path    the file to write (replaced if it exists)
 /// @param mesh    #V×3 positions, #F×3 triangles
 /// @param binary  binary STL if true, ASCII otherwise
-/// @throws InputError naming `path` if the file cannot be written
+/// @throws InputError naming `path` as `save_obj`
 void save_stl(const std::filesystem::path& path, const Mesh& mesh, bool binary = true);
 
 }  // namespace reconfig::geometry
