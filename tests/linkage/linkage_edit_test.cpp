@@ -124,5 +124,19 @@ TEST(LinkageEdit, EnvelopePullsTheMotionInside) {
   EXPECT_LT(y_max_after, y_max - 0.3) << result.status;
 }
 
+TEST(LinkageEdit, SessionUpdatesTheReferencesAfterEachEdit) {
+  EditSession session(test::example("four_bar_crank_rocker.json"));
+  const int C = session.linkage().find_joint("C");
+  EditObjectives first;
+  first.drags.push_back({C, session.linkage().joints[C].position + Eigen::Vector2d(0.3, -0.2), std::nullopt, 1});
+  const EditResult result = session.edit(first);
+  EXPECT_LT(result.energy_after, result.energy_before);
+  EXPECT_EQ(session.reference_lengths(), link_lengths(session.linkage()));
+  // With nothing asked, the next edit keeps the linkage: the regularizer is already at rest.
+  const Eigen::Matrix2Xd before = session.linkage().initial_positions();
+  session.edit(EditObjectives{});
+  EXPECT_LT((session.linkage().initial_positions() - before).cwiseAbs().maxCoeff(), 1e-9);
+}
+
 }  // namespace
 }  // namespace reconfig::linkage

@@ -91,4 +91,31 @@ double edit_energy(const Linkage& original, const EditObjectives& objectives, co
 /// and the displacement halved until it passes.
 EditResult edit_linkage(const Linkage& linkage, const EditObjectives& objectives, const EditSettings& settings = {});
 
+/// A sequence of edits, as in an interactive editor: each edit regularizes towards the link
+/// lengths left by the previous one ("we update the reference distances after each editing
+/// operation", §4.1), and the linkage after each edit is the start of the next.
+class EditSession {
+ public:
+  explicit EditSession(Linkage linkage, EditSettings settings = {})
+      : linkage_(std::move(linkage)), settings_(settings), references_(link_lengths(linkage_)) {}
+
+  const Linkage& linkage() const { return linkage_; }
+  const std::vector<double>& reference_lengths() const { return references_; }
+
+  /// Runs one edit (objectives.reference_lengths is replaced by the session's), keeps its
+  /// result and updates the references.
+  EditResult edit(EditObjectives objectives) {
+    objectives.reference_lengths = references_;
+    EditResult result = edit_linkage(linkage_, objectives, settings_);
+    linkage_ = result.linkage;
+    references_ = link_lengths(linkage_);
+    return result;
+  }
+
+ private:
+  Linkage linkage_;
+  EditSettings settings_;
+  std::vector<double> references_;
+};
+
 }  // namespace reconfig::linkage
