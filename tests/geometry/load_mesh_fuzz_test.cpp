@@ -162,7 +162,7 @@ TEST(LoadMeshFuzz, MutatedFilesLoadOrThrowInputError) {
   std::mt19937 rng(std::getenv("RECONFIG_FUZZ_SEED") ? std::atoi(std::getenv("RECONFIG_FUZZ_SEED")) : 12345);
   const auto start = std::chrono::steady_clock::now();
   int trials = 0, loaded = 0;
-  const int max_trials = std::getenv("RECONFIG_FUZZ_TRIALS") ? std::atoi(std::getenv("RECONFIG_FUZZ_TRIALS")) : 4000;
+  const int max_trials = std::getenv("RECONFIG_FUZZ_TRIALS") ? std::atoi(std::getenv("RECONFIG_FUZZ_TRIALS")) : 10000;
   for (; trials < max_trials; ++trials) {
     const Seed& seed = all[static_cast<std::size_t>(trials) % all.size()];
     const std::string bytes = mutate(seed.bytes, rng);
@@ -172,7 +172,7 @@ TEST(LoadMeshFuzz, MutatedFilesLoadOrThrowInputError) {
     } catch (...) {
       FAIL() << "trial " << trials << " threw out of the checker";
     }
-    if (!std::getenv("RECONFIG_FUZZ_TRIALS") && std::chrono::steady_clock::now() - start > std::chrono::milliseconds(1200)) break;
+    if (!std::getenv("RECONFIG_FUZZ_TRIALS") && std::chrono::steady_clock::now() - start > std::chrono::milliseconds(1000)) break;
   }
   std::printf("[ fuzz     ] %d mutated files, %d loaded as meshes\n", trials, loaded);
   EXPECT_GE(trials, 800) << "the loaders are too slow to fuzz enough in the time budget";

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <random>
 #include <sstream>
 
 #include "mesh_test_helpers.h"
@@ -147,23 +148,26 @@ TEST(LoadMesh, OffReaderHandlesTheUsualVariants) {
   error_of([] { load_mesh_from_memory("OFF BINARY\n", "off"); });
 }
 
+/// A prism of height 1 over `outline` (counter-clockwise), written as OFF with each cap one
+/// polygon, and loaded back.
+Mesh prism(const std::vector<Eigen::Vector2d>& outline) {
+  const int n = static_cast<int>(outline.size());
+  std::ostringstream off;
+  off.precision(17);
+  off << "OFF\n" << 2 * n << " " << n + 2 << " 0\n";
+  for (int z = 0; z < 2; ++z)
+    for (const auto& p : outline) off << p.x() << " " << p.y() << " " << z << "\n";
+  off << n;
+  for (int i = n - 1; i >= 0; --i) off << " " << i;
+  off << "\n" << n;
+  for (int i = 0; i < n; ++i) off << " " << n + i;
+  off << "\n";
+  for (int i = 0; i < n; ++i) off << "4 " << i << " " << (i + 1) % n << " " << n + (i + 1) % n << " " << n + i << "\n";
+  return load_mesh_from_memory(off.str(), "off");
+}
+
 TEST(LoadMesh, OffKeepsLargeAndConcavePolygons) {
   // A prism over a 12-gon (caps with 12 corners) and over a concave L-shaped hexagon.
-  auto prism = [](const std::vector<Eigen::Vector2d>& outline) {
-    const int n = static_cast<int>(outline.size());
-    std::ostringstream off;
-    off.precision(17);
-    off << "OFF\n" << 2 * n << " " << n + 2 << " 0\n";
-    for (int z = 0; z < 2; ++z)
-      for (const auto& p : outline) off << p.x() << " " << p.y() << " " << z << "\n";
-    off << n;
-    for (int i = n - 1; i >= 0; --i) off << " " << i;
-    off << "\n" << n;
-    for (int i = 0; i < n; ++i) off << " " << n + i;
-    off << "\n";
-    for (int i = 0; i < n; ++i) off << "4 " << i << " " << (i + 1) % n << " " << n + (i + 1) % n << " " << n + i << "\n";
-    return load_mesh_from_memory(off.str(), "off");
-  };
   std::vector<Eigen::Vector2d> circle;
   for (int i = 0; i < 12; ++i) circle.emplace_back(std::cos(i * M_PI / 6), std::sin(i * M_PI / 6));
   const Mesh round = prism(circle);
@@ -218,6 +222,33 @@ TEST(LoadMesh, TriangulatesPolygons) {
   EXPECT_EQ(cube.face_count(), 12);
   EXPECT_TRUE(check_mesh(cube).is_valid_solid()) << check_mesh(cube).summary();
   EXPECT_DOUBLE_EQ(mass_properties(cube).volume, 8);
+}
+
+TEST(LoadMesh, OffTriangulatesRandomStarShapedPolygons) {
+  // Oracle: a prism of height 1 over a random star-shaped (mostly concave) polygon is a valid
+  // solid whose volume is the polygon's area (shoelace formula).
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> radius(0.2, 1.0), jitter(0.1, 0.9);
+  for (int trial = 0; trial < 40; ++trial) {
+    const int n = 4 + trial % 27;
+    std::vector<Eigen::Vector2d> outline;
+    for (int i = 0; i < n; ++i) {
+      const double angle = 2 * M_PI * (i + jitter(rng)) / n, r = radius(rng);
+      outline.emplace_back(r * std::cos(angle), r * std::sin(angle));
+    }
+    double area = 0;
+    for (int i = 0; i < n; ++i) {
+      const Eigen::Vector2d& p = outline[static_cast<std::size_t>(i)];
+      const Eigen::Vector2d& q = outline[static_cast<std::size_t>((i + 1) % n)];
+      area += (p.x() * q.y() - q.x() * p.y()) / 2;
+    }
+    const Mesh mesh = prism(outline);
+    SCOPED_TRACE(trial);
+    EXPECT_EQ(mesh.face_count(), 2 * (n - 2) + 2 * n);
+    const MeshReport report = check_mesh(mesh);
+    EXPECT_TRUE(report.is_valid_solid()) << report.summary();
+    EXPECT_NEAR(mass_properties(mesh).volume, area, 1e-12);
+  }
 }
 
 // --- PLY ------------------------------------------------------------------------------------
