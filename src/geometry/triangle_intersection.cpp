@@ -1,6 +1,7 @@
 #include "reconfig/geometry/triangle_intersection.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <Eigen/Geometry>
 #include <CGAL/Intersections_3/Point_3_Segment_3.h>
 #include <CGAL/Intersections_3/Point_3_Triangle_3.h>
 #include <CGAL/Intersections_3/Segment_3_Segment_3.h>
@@ -9,6 +10,7 @@
 
 #include <cassert>
 #include <cmath>
+#include <limits>
 
 #include "geometry/detail/exact_predicates.h"
 
@@ -103,6 +105,78 @@ bool all_finite(const Vec3* p, int n) {
   return true;
 }
 
+/// A point where edge pq crosses a plane (signed distances sp, sq of opposite signs), with
+/// a bound on its rounding error.
+struct Crossing {
+  Vec3 point;
+  double error;
+};
+
+Crossing crossing(const Vec3& p, const Vec3& q, double sp, double sq, double distance_error) {
+  constexpr double eps = std::numeric_limits<double>::epsilon();
+  const double t = sp / (sp - sq);  // |sp - sq| = |sp| + |sq|: no cancellation
+  Crossing c;
+  c.point = p + t * (q - p);
+  c.error = 2.0 * distance_error / (std::abs(sp) + std::abs(sq)) * (q - p).norm() + 8.0 * eps * c.point.norm();
+  return c;
+}
+
+/// The two crossings of triangle t with the plane of triangle p (normal n, computed from p's
+/// edges), for a triangle whose corners' exact sides `side` are all nonzero (one corner alone
+/// on its side).
+void plane_crossings(const Vec3* t, const int* side, const Vec3* p, const Vec3& n, Crossing* out) {
+  const Vec3& o = p[0];
+  constexpr double eps = std::numeric_limits<double>::epsilon();
+  const int lone = side[0] == side[1] ? 2 : (side[0] == side[2] ? 1 : 0);
+  double s[3], size = 0;
+  for (int i = 0; i < 3; ++i) {
+    s[i] = n.dot(t[i] - o);
+    size = std::max(size, (t[i] - o).norm());
+  }
+  // Rounding of n (a cross product of edges: absolute error ~ eps·|e1|·|e2|, large relative to
+  // |n| for slivers), of t − o and of the dot product.
+  const double edges = (p[1] - p[0]).norm() * (p[2] - p[0]).norm();
+  const double distance_error = 16.0 * eps * (n.norm() + edges) * size;
+  int k = 0;
+  for (int i = 0; i < 3; ++i)
+    if (i != lone) out[k++] = crossing(t[lone], t[i], s[lone], s[i], distance_error);
+}
+
+/// Fast construction for transversal triangles in general position (no corner exactly on the
+/// other's plane): the contact is the overlap of the two segments each triangle cuts from the
+/// other's plane, computed in doubles with error bounds. Returns false (the caller then
+/// constructs exactly) when the bounds cannot tell which ends bound the overlap, or whether
+/// it is a single point.
+bool transversal_contact(const Vec3* a, const Vec3* b, TriangleContact& contact) {
+  int side_a[3], side_b[3];  // exact sides of a's corners w.r.t. b's plane, and vice versa
+  const Point pa[3] = {point(a[0]), point(a[1]), point(a[2])}, pb[3] = {point(b[0]), point(b[1]), point(b[2])};
+  for (int i = 0; i < 3; ++i) {
+    side_a[i] = static_cast<int>(CGAL::orientation(pb[0], pb[1], pb[2], pa[i]));
+    side_b[i] = static_cast<int>(CGAL::orientation(pa[0], pa[1], pa[2], pb[i]));
+    if (side_a[i] == 0 || side_b[i] == 0) return false;
+  }
+  const Vec3 na = (a[1] - a[0]).cross(a[2] - a[0]), nb = (b[1] - b[0]).cross(b[2] - b[0]);
+  const Vec3 d = na.cross(nb);
+  if (!(d.norm() > 1e-6 * na.norm() * nb.norm())) return false;  // nearly parallel planes
+  const Vec3 dir = d.normalized();
+  Crossing ca[2], cb[2];
+  plane_crossings(a, side_a, b, nb, ca);
+  plane_crossings(b, side_b, a, na, cb);
+  // Order each pair along the common line; a tie within the error bounds is undecidable.
+  const auto param = [&](const Crossing& c) { return dir.dot(c.point); };
+  const auto separated = [&](const Crossing& x, const Crossing& y) {
+    return std::abs(param(x) - param(y)) > 2.0 * (x.error + y.error);
+  };
+  if (param(ca[0]) > param(ca[1])) std::swap(ca[0], ca[1]);
+  if (param(cb[0]) > param(cb[1])) std::swap(cb[0], cb[1]);
+  if (!separated(ca[0], cb[0]) || !separated(ca[1], cb[1])) return false;
+  const Crossing& start = param(ca[0]) > param(cb[0]) ? ca[0] : cb[0];
+  const Crossing& end = param(ca[1]) < param(cb[1]) ? ca[1] : cb[1];
+  if (!separated(start, end) || param(start) > param(end)) return false;
+  contact.points = {start.point, end.point};
+  return true;
+}
+
 }  // namespace
 
 bool hulls_intersect(const Vec3* a, int na, const Vec3* b, int nb) {
@@ -142,6 +216,7 @@ TriangleContact intersect_triangles(const Eigen::Vector3d& a0, const Eigen::Vect
   }
   if (!boxes_overlap(a, 3, b, 3) || !simplices_intersect(a, ra, b, rb)) return contact;
   contact.intersect = true;
+  if (ra.count == 3 && rb.count == 3 && !contact.coplanar && transversal_contact(a, b, contact)) return contact;
   exact_contact(a, ra, b, rb, contact);
   return contact;
 }

@@ -231,6 +231,20 @@ TEST(SelfIntersections, DuplicateAndDegenerateFaces) {
   EXPECT_TRUE(find_self_intersections(mesh).pairs.empty());
   mesh.F << 0, 1, 2, 0, 3, 3;  // segment 0–3 (repeated index) along edge 0–1 of face 0
   EXPECT_EQ(find_self_intersections(mesh).pairs, (Pairs{{0, 1}}));
+  // A zero-area face (3, 0, 4) whose shared corner 0 lies strictly inside it.
+  mesh.V.conservativeResize(5, 3);
+  mesh.V.row(3) << -1, -1, 1;
+  mesh.V.row(4) << 1, 1, -1;
+  mesh.F << 0, 1, 2, 3, 0, 4;  // crosses the plane of face 0 at vertex 0 only
+  EXPECT_TRUE(find_self_intersections(mesh).pairs.empty());
+  mesh.V.row(3) << -1, -1, 0;
+  mesh.V.row(4) << 1, 1, 0;
+  mesh.F << 0, 1, 2, 3, 0, 4;  // runs along the diagonal of face 0
+  EXPECT_EQ(find_self_intersections(mesh).pairs, (Pairs{{0, 1}}));
+  mesh.V.row(4) << 0, 0, 0;  // corner 4 coincides with corner 0: a segment from 0 outward
+  EXPECT_TRUE(find_self_intersections(mesh).pairs.empty());
+  mesh.V.row(3) << 1, 1, 0;
+  EXPECT_EQ(find_self_intersections(mesh).pairs, (Pairs{{0, 1}}));
 }
 
 TEST(SelfIntersections, BadInputThrows) {

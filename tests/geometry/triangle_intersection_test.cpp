@@ -102,10 +102,11 @@ std::array<V3<T>, 3> to_exact(const Tri& t) {
   std::array<V3<T>, 3> r;
   for (int i = 0; i < 3; ++i)
     for (int d = 0; d < 3; ++d) {
-      if constexpr (std::is_same_v<T, std::int64_t>)
+      if constexpr (std::is_same_v<T, std::int64_t>) {
         r[i][d] = static_cast<std::int64_t>(t[i][d]);
-      else
+      } else {
         r[i][d] = T(t[i][d]);  // Gmpq from double is exact
+      }
     }
   return r;
 }
@@ -122,11 +123,31 @@ void expect_consistent(const Tri& a, const Tri& b, const TriangleContact& c, boo
   }
   ASSERT_GE(c.points.size(), 1u);
   ASSERT_LE(c.points.size(), 6u);
-  if (!c.coplanar) EXPECT_LE(c.points.size(), 2u);
+  if (!c.coplanar) {
+    EXPECT_LE(c.points.size(), 2u);
+    // The ends of the shared segment lie on the boundary of one of the triangles (so a
+    // shortened segment cannot pass).
+    const auto on_boundary = [](const Vector3d& p, const Tri& t) {
+      return std::min({testing::distance_to_segment(p, t[0], t[1]), testing::distance_to_segment(p, t[1], t[2]),
+                       testing::distance_to_segment(p, t[2], t[0])}) <= 1e-9;
+    };
+    for (const Vector3d& p : c.points) EXPECT_TRUE(on_boundary(p, a) || on_boundary(p, b)) << p.transpose();
+  }
   EXPECT_EQ(c.coplanar, oracle_coplanar_flag);
   for (const Vector3d& p : c.points) {
     EXPECT_LE(testing::distance_to_triangle(p, a[0], a[1], a[2]), 1e-9);
     EXPECT_LE(testing::distance_to_triangle(p, b[0], b[1], b[2]), 1e-9);
+  }
+  if (c.points.size() >= 3) {  // a convex polygon in order: every turn has the same sense
+    Vector3d normal = Vector3d::Zero();
+    const size_t n = c.points.size();
+    for (size_t i = 0; i < n; ++i) normal += c.points[i].cross(c.points[(i + 1) % n]);  // Newell
+    for (size_t i = 0; i < n; ++i) {
+      const Vector3d& p = c.points[i];
+      const Vector3d& q = c.points[(i + 1) % n];
+      const Vector3d& r = c.points[(i + 2) % n];
+      EXPECT_GT((q - p).cross(r - q).dot(normal), 0) << "polygon not convex in order, vertex " << i;
+    }
   }
   const auto reported = [&](const Vector3d& q) {
     return std::any_of(c.points.begin(), c.points.end(), [&](const Vector3d& p) { return (p - q).norm() <= 1e-9; });
@@ -135,7 +156,9 @@ void expect_consistent(const Tri& a, const Tri& b, const TriangleContact& c, boo
     if ((s[1] - s[0]).cross(s[2] - s[0]).squaredNorm() == 0) return;  // corners of a flat one may be inner
     for (const Vector3d& q : s) {
       const Tri point{q, q, q};
-      if (intersect(point, t)) EXPECT_TRUE(reported(q)) << "corner " << q.transpose() << " in other triangle";
+      if (intersect(point, t)) {
+        EXPECT_TRUE(reported(q)) << "corner " << q.transpose() << " in other triangle";
+      }
     }
   };
   check_corners(a, b);
@@ -230,6 +253,35 @@ TEST(TriangleIntersection, MatchesRationalOracleOnPerturbedDoubles) {
     ASSERT_EQ(c.intersect, expected);
     expect_consistent(a, b, c, oracle_coplanar(to_exact<CGAL::Gmpq>(a), to_exact<CGAL::Gmpq>(b)));
   }
+}
+
+TEST(TriangleIntersection, ContactsOfRandomDoubleTriangles) {
+  // General position (the fast transversal construction) and thin slivers, at several scales
+  // and offsets from the origin.
+  std::mt19937 rng(21);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  int hits = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    const double scale = std::pow(10.0, trial % 7 - 3);
+    const Vector3d offset = Vector3d(unit(rng), unit(rng), unit(rng)) * scale * (trial % 3 == 0 ? 1e3 : 1.0);
+    Tri a, b;
+    for (auto& p : a) p = offset + scale * Vector3d(unit(rng), unit(rng), unit(rng));
+    for (auto& p : b) p = offset + scale * Vector3d(unit(rng), unit(rng), unit(rng));
+    if (trial % 5 == 0) a[2] = a[0] + (a[1] - a[0]) * 0.5 + scale * 1e-7 * Vector3d(unit(rng), unit(rng), unit(rng));
+    const TriangleContact c = contact(a, b);
+    hits += c.intersect;
+    ASSERT_EQ(c.intersect, intersect(a, b));
+    if (!c.intersect) continue;
+    // Rescale to unit size for the 1e-9 checks.
+    Tri ua = a, ub = b;
+    for (auto& p : ua) p = (p - offset) / scale;
+    for (auto& p : ub) p = (p - offset) / scale;
+    TriangleContact uc = c;
+    for (auto& p : uc.points) p = (p - offset) / scale;
+    expect_consistent(ua, ub, uc, oracle_coplanar(to_exact<CGAL::Gmpq>(a), to_exact<CGAL::Gmpq>(b)));
+    if (::testing::Test::HasFailure()) FAIL() << "trial " << trial;
+  }
+  EXPECT_GT(hits, 300);
 }
 
 TEST(TriangleIntersection, SymmetricUnderSwapAndCornerPermutation) {

@@ -13,17 +13,23 @@ struct TriangleContact {
   bool coplanar = false;   ///< both lie in one plane (exact); `points` is then a polygon
   /// What they share: nothing (no contact), one point (touching at a point), the two ends of
   /// the intersection segment, or (coplanar) the vertices of the convex overlap polygon
-  /// (up to 6). Coordinates are rounded to double; the decision `intersect` is exact.
+  /// (up to 6, in order around it, no repeats). Coordinates are rounded to double; the
+  /// decision `intersect` and the number of points are exact. Transversal triangles in
+  /// general position are constructed in doubles under error bounds; every other case
+  /// (touching, coplanar, degenerate, or when the bounds cannot decide) exactly (CGAL Epeck).
   std::vector<Eigen::Vector3d> points;
 };
 
 /// Whether two closed triangles share a point, decided exactly (filtered exact predicates:
 /// never fooled by rounding), including coplanar, touching and degenerate triangles
-/// (a degenerate triangle is treated as the segment or point it collapses to).
+/// (a degenerate triangle is treated as the segment or point it collapses to). A triangle with
+/// a NaN or infinite coordinate intersects nothing. Cheap when the triangles' boxes are
+/// disjoint (a few comparisons), filtered exact orientation tests otherwise.
 bool triangles_intersect(const Eigen::Vector3d& a0, const Eigen::Vector3d& a1, const Eigen::Vector3d& a2,
                          const Eigen::Vector3d& b0, const Eigen::Vector3d& b1, const Eigen::Vector3d& b2);
 
-/// Same decision as `triangles_intersect`, plus the shared points.
+/// Same decision as `triangles_intersect`, plus the shared points. Non-finite coordinates give
+/// no contact.
 TriangleContact intersect_triangles(const Eigen::Vector3d& a0, const Eigen::Vector3d& a1,
                                     const Eigen::Vector3d& a2, const Eigen::Vector3d& b0,
                                     const Eigen::Vector3d& b1, const Eigen::Vector3d& b2);
