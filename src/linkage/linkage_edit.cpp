@@ -25,7 +25,7 @@ std::vector<double> orientations(const JointOrder& order, const Eigen::Matrix2Xd
   return signs;
 }
 
-class EditProblem {
+class EditProblem {  // EditEnergy::Impl
  public:
   EditProblem(const Linkage& original, const EditObjectives& objectives, const EditSettings& settings)
       : objectives_(objectives),
@@ -72,7 +72,7 @@ class EditProblem {
     const double per_sample = 1.0 / static_cast<double>(angles_.size());
     G_.resize(2, n);
     for (std::size_t s = 0; s < angles_.size(); ++s) {
-      if (!kinematics_.solve(angles_[s], X_, D_)) return kInfinity;
+      if (!(gradient ? kinematics_.solve(angles_[s], X_, tape_) : kinematics_.solve(angles_[s], X_))) return kInfinity;
       G_.setZero();
       for (const auto& trajectory : objectives_.trajectories) {
         const Eigen::Vector2d r = X_.col(trajectory.joint) - trajectory.curve[s];
@@ -91,17 +91,18 @@ class EditProblem {
         }
       }
       barrier(per_sample, energy);
-      if (gradient) D_.pull_back(G_, *gradient);
+      if (gradient) tape_.pull_back(G_, *gradient);
     }
     // Drags in a current configuration: their own reconstruction.
     for (const auto& drag : objectives_.drags) {
       if (!drag.angle) continue;
-      if (!kinematics_.solve(*drag.angle, X_, D_)) return kInfinity;
+      if (!(gradient ? kinematics_.solve(*drag.angle, X_, tape_) : kinematics_.solve(*drag.angle, X_)))
+        return kInfinity;
       const Eigen::Vector2d r = X_.col(drag.joint) - drag.target;
       energy += 0.5 * drag.weight * r.squaredNorm();
       G_.setZero();
       G_.col(drag.joint) = drag.weight * r;
-      if (gradient) D_.pull_back(G_, *gradient);
+      if (gradient) tape_.pull_back(G_, *gradient);
     }
     return energy;
   }
@@ -131,7 +132,7 @@ class EditProblem {
     }
   }
 
-  const EditObjectives& objectives_;
+  EditObjectives objectives_;
   JointOrder order_;
   SymbolicKinematics kinematics_;
   std::vector<double> angles_;
@@ -139,7 +140,7 @@ class EditProblem {
   std::vector<double> references_;
   std::vector<double> signs_;
   Eigen::Matrix2Xd X_, G_;
-  StateDerivatives D_;
+  StateTape tape_;  // reverse-mode gradients: O(#rules) per sample
 };
 
 // The motion still works as before: same rocking/turning behaviour, no dead point crossed.
@@ -200,10 +201,22 @@ std::vector<Eigen::Vector2d> joint_trajectory(const Linkage& linkage, int joint,
   return curve;
 }
 
+class EditEnergy::Impl : public EditProblem {
+ public:
+  using EditProblem::EditProblem;
+};
+
+EditEnergy::EditEnergy(const Linkage& original, const EditObjectives& objectives, const EditSettings& settings)
+    : impl_(std::make_unique<Impl>(original, objectives, settings)) {}
+EditEnergy::~EditEnergy() = default;
+
+double EditEnergy::operator()(const Eigen::Matrix2Xd& X0, Eigen::Matrix2Xd* gradient) { return (*impl_)(X0, gradient); }
+
+const std::vector<double>& EditEnergy::sample_angles() const { return impl_->angles(); }
+
 double edit_energy(const Linkage& original, const EditObjectives& objectives, const EditSettings& settings,
                    const Eigen::Matrix2Xd& X0, Eigen::Matrix2Xd* gradient) {
-  EditProblem problem(original, objectives, settings);
-  return problem(X0, gradient);
+  return EditEnergy(original, objectives, settings)(X0, gradient);
 }
 
 EditResult edit_linkage(const Linkage& linkage, const EditObjectives& objectives, const EditSettings& settings) {

@@ -145,31 +145,37 @@ void SymbolicKinematics::build_dependencies() {
 }
 
 bool SymbolicKinematics::solve(double angle, Eigen::Matrix2Xd& X, ReconstructionFailure* failure) const {
-  return solve_continued(angle, X, nullptr, failure);
+  return solve_continued(angle, X, nullptr, nullptr, failure);
 }
 
 bool SymbolicKinematics::solve(double angle, Eigen::Matrix2Xd& X, StateDerivatives& D,
                                ReconstructionFailure* failure) const {
-  return solve_continued(angle, X, &D, failure);
+  return solve_continued(angle, X, &D, nullptr, failure);
+}
+
+bool SymbolicKinematics::solve(double angle, Eigen::Matrix2Xd& X, StateTape& tape, ReconstructionFailure* failure) const {
+  return solve_continued(angle, X, nullptr, &tape, failure);
 }
 
 bool SymbolicKinematics::solve_continued(double angle, Eigen::Matrix2Xd& X, StateDerivatives* derivatives,
-                                         ReconstructionFailure* failure) const {
-  if (order_.blocks.empty()) return solve_once(angle, X, derivatives, failure);
+                                         StateTape* tape, ReconstructionFailure* failure) const {
+  if (order_.blocks.empty()) return solve_once(angle, X, derivatives, tape, failure);
   // Newton blocks: continue from the last solution in steps of at most 3°.
   const double kStep = 3 * std::numbers::pi / 180;
   double from = guess_angle_;
   const double delta = angle - from;  // unwrapped: the caller chooses the way round
   const int steps = static_cast<int>(std::ceil(std::abs(delta) / kStep));
   for (int s = 1; s < steps; ++s)
-    if (!solve_once(from + delta * s / steps, X, nullptr, failure)) return false;
-  return solve_once(angle, X, derivatives, failure);
+    if (!solve_once(from + delta * s / steps, X, nullptr, nullptr, failure)) return false;
+  return solve_once(angle, X, derivatives, tape, failure);
 }
 
-bool SymbolicKinematics::solve_once(double angle, Eigen::Matrix2Xd& X, StateDerivatives* D,
+bool SymbolicKinematics::solve_once(double angle, Eigen::Matrix2Xd& X, StateDerivatives* D, StateTape* tape,
                                     ReconstructionFailure* failure) const {
   X.resize(2, static_cast<Eigen::Index>(linkage_.joints.size()));
   if (D && D->joint_count() != joint_count()) *D = layout_;
+  if (tape) tape->steps.resize(order_.rules.size()), tape->blocks.resize(order_.blocks.size());
+  const bool derivatives = D || tape;
   const Eigen::Matrix2d I = Eigen::Matrix2d::Identity(), P = detail::perp_matrix();
   const double cosine = std::cos(angle), sine = std::sin(angle);
   for (std::size_t r = 0; r < order_.rules.size(); ++r) {
@@ -181,14 +187,15 @@ bool SymbolicKinematics::solve_once(double angle, Eigen::Matrix2Xd& X, StateDeri
       case RuleKind::kFixed:
         X.col(rule.k) = X0_.col(rule.k);
         if (D) D->block(rule.k, 0) = I;
+        if (tape) tape->steps[r] = {rule.k, -1, -1, -1, Mi, Mj, Pi, Pj, I};
         continue;
       case RuleKind::kNewtonBlock:
-        if (!solve_block(static_cast<int>(r), X, D, failure)) return false;
+        if (!solve_block(static_cast<int>(r), X, D, tape, failure)) return false;
         continue;
       case RuleKind::kMotor: {
         const Eigen::Vector2d u(cosine, sine);
         X.col(rule.k) = X.col(rule.i) + c.A * u;
-        if (!D) continue;
+        if (!derivatives) continue;
         const Eigen::Vector2d e = (X0_.col(rule.k) - X0_.col(rule.i)) / c.A;
         Mi = I;
         Mj.setZero();
@@ -201,7 +208,7 @@ bool SymbolicKinematics::solve_once(double angle, Eigen::Matrix2Xd& X, StateDeri
         const Eigen::Vector2d d = X.col(rule.j) - X.col(rule.i);
         const Eigen::Vector2d pd = perp(d);
         X.col(rule.k) = X.col(rule.i) + c.a * d + c.b * pd;
-        if (!D) continue;
+        if (!derivatives) continue;
         Mj = c.a * I + c.b * P;
         Mi = I - Mj;
         Pi = d * c.da_di.transpose() + pd * c.db_di.transpose();
@@ -230,7 +237,7 @@ bool SymbolicKinematics::solve_once(double angle, Eigen::Matrix2Xd& X, StateDeri
         const double q = c.sign * std::sqrt(t);
         const Eigen::Vector2d pd = perp(d);
         X.col(rule.k) = X.col(rule.i) + p * d + q * pd;
-        if (!D) continue;
+        if (!derivatives) continue;
         const Eigen::Vector2d dp_dd = -(c.A - c.B) / (D2 * D2) * d;
         const Eigen::Vector2d dt_dd = -2 * c.A / (D2 * D2) * d - 2 * p * dp_dd;
         const Eigen::Vector2d dq_dd = dt_dd / (2 * q);
@@ -244,6 +251,8 @@ bool SymbolicKinematics::solve_once(double angle, Eigen::Matrix2Xd& X, StateDeri
         break;
       }
     }
+    if (tape) tape->steps[r] = {rule.k, rule.i, rule.j, -1, Mi, Mj, Pi, Pj, Pk};
+    if (!D) continue;
     // Chain rule: ∂x_k/∂x̄ = Mi ∂x_i/∂x̄ + Mj ∂x_j/∂x̄ + direct terms.
     const RuleMaps& map = maps_[r];
     Eigen::Matrix2d* out = D->blocks(rule.k);
@@ -263,7 +272,7 @@ bool SymbolicKinematics::solve_once(double angle, Eigen::Matrix2Xd& X, StateDeri
   return true;
 }
 
-bool SymbolicKinematics::solve_block(int rule_index, Eigen::Matrix2Xd& X, StateDerivatives* D,
+bool SymbolicKinematics::solve_block(int rule_index, Eigen::Matrix2Xd& X, StateDerivatives* D, StateTape* tape,
                                      ReconstructionFailure* failure) const {
   const Rule& rule = order_.rules[rule_index];
   const NewtonBlock& block = order_.blocks[rule.block];
@@ -307,9 +316,22 @@ bool SymbolicKinematics::solve_block(int rule_index, Eigen::Matrix2Xd& X, StateD
     return false;
   }
   for (std::size_t b = 0; b < block.joints.size(); ++b) guess.col(static_cast<Eigen::Index>(b)) = X.col(block.joints[b]);
-  if (!D) return true;
+  if (!D && !tape) return true;
   // Implicit function theorem: J_y dy + J_z dz + J_p dx̄ = 0.
   const std::vector<int>& involved = system.involved();
+  if (tape) {
+    StateTape::Step& step = tape->steps[rule_index];
+    step = {};
+    step.block = rule.block;
+    StateTape::Block& record = tape->blocks[rule.block];
+    record.outputs = block.joints;
+    record.inputs.assign(involved.begin() + n / 2, involved.end());
+    record.params = involved;
+    lu.compute(J.leftCols(n));
+    record.S_in = -lu.solve(J.rightCols(J.cols() - n));
+    record.S_param = -lu.solve(system.parameter_jacobian(X));
+    if (!D) return true;
+  }
   const std::vector<int>& all = D->dependencies(block.joints.front());
   Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(n, 2 * static_cast<Eigen::Index>(all.size()));
   const Eigen::MatrixXd Jp = system.parameter_jacobian(X);

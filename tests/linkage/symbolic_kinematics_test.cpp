@@ -251,6 +251,31 @@ TEST(StateDerivatives, MatchFiniteDifferencesOnRandomLinkagesAndAComplexLoop) {
   expect_derivatives_match(test::complex_loop(), radians(10), "complex loop");
 }
 
+TEST(StateTape, ReverseModeMatchesForwardDerivatives) {
+  std::mt19937 rng(5);
+  std::normal_distribution<double> normal;
+  for (const char* name : test::kExamples) {
+    const Linkage linkage = test::example(name);
+    const SymbolicKinematics kinematics = kinematics_of(linkage);
+    const MotionRange range = motion_range(kinematics);
+    const double angle = 0.3 * range.lower + 0.7 * range.upper;
+    Eigen::Matrix2Xd X, Y;
+    StateDerivatives D;
+    StateTape tape;
+    kinematics.reset_continuation();
+    ASSERT_TRUE(kinematics.solve(angle, X, D)) << name;
+    kinematics.reset_continuation();
+    ASSERT_TRUE(kinematics.solve(angle, Y, tape)) << name;
+    EXPECT_EQ(X, Y);
+    Eigen::Matrix2Xd G(2, X.cols());
+    for (Eigen::Index i = 0; i < G.size(); ++i) G.data()[i] = normal(rng);
+    Eigen::Matrix2Xd forward = Eigen::Matrix2Xd::Zero(2, X.cols()), reverse = forward;
+    D.pull_back(G, forward);
+    tape.pull_back(G, reverse);
+    EXPECT_LT((forward - reverse).cwiseAbs().maxCoeff(), 1e-9 * std::max(1.0, forward.cwiseAbs().maxCoeff())) << name;
+  }
+}
+
 TEST(StateDerivatives, PullBackIsTheTransposedProduct) {
   const Linkage linkage = test::example("klann.json");
   const SymbolicKinematics kinematics = kinematics_of(linkage);

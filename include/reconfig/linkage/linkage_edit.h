@@ -5,6 +5,7 @@
 /// (eq. 6–7), minimized with L-BFGS over the initial configuration x̄ (eq. 8).
 
 #include <Eigen/Core>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -79,9 +80,32 @@ std::vector<double> edit_sample_angles(const Linkage& linkage, int samples);
 /// be reconstructed
 std::vector<Eigen::Vector2d> joint_trajectory(const Linkage& linkage, int joint, const std::vector<double>& angles);
 
-/// The edit energy and its gradient with respect to x̄ (2×#J), +∞ if x̄ breaks the
-/// linkage (a triangle cannot close at some sample, or a reconstruction triangle flips
-/// orientation or degenerates in x̄). Exposed for tests.
+/// The edit energy (eq. 8) as a function of the initial configuration x̄, set up once for
+/// repeated evaluation (an interactive editor evaluates it at every optimizer step).
+class EditEnergy {
+ public:
+  /// @param original the linkage being edited: its rule order, triangle orientations and
+  ///        motion range (which fixes the sample angles) are kept
+  EditEnergy(const Linkage& original, const EditObjectives& objectives, const EditSettings& settings = {});
+  ~EditEnergy();
+  EditEnergy(const EditEnergy&) = delete;
+  EditEnergy& operator=(const EditEnergy&) = delete;
+
+  /// The energy at x̄ = X0 (2×#J) and, if `gradient` is not null, ∂E/∂x̄ (2×#J, by
+  /// reverse-mode differentiation through the rules). +∞ if X0 breaks the linkage: a
+  /// triangle cannot close at some sample, or a reconstruction triangle flips orientation
+  /// or degenerates in X0.
+  double operator()(const Eigen::Matrix2Xd& X0, Eigen::Matrix2Xd* gradient);
+
+  /// The motor angles (radians) the motion terms are sampled at.
+  const std::vector<double>& sample_angles() const;
+
+ private:
+  class Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+/// One-shot EditEnergy evaluation (sets up, evaluates once).
 double edit_energy(const Linkage& original, const EditObjectives& objectives, const EditSettings& settings,
                    const Eigen::Matrix2Xd& X0, Eigen::Matrix2Xd* gradient);
 

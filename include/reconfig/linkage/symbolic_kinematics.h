@@ -10,6 +10,7 @@
 #include "reconfig/linkage/joint_order.h"
 #include "reconfig/linkage/linkage.h"
 #include "reconfig/linkage/state_derivatives.h"
+#include "reconfig/linkage/state_tape.h"
 
 namespace reconfig::linkage {
 
@@ -63,6 +64,10 @@ class SymbolicKinematics {
   /// at fixed motor value. @param D output, resized on first use and reused after
   bool solve(double angle, Eigen::Matrix2Xd& X, StateDerivatives& D, ReconstructionFailure* failure = nullptr) const;
 
+  /// Joint positions, recording the local derivatives of every rule for reverse-mode
+  /// gradients (StateTape::pull_back), the fast way to ∂f/∂x̄ of a scalar objective.
+  bool solve(double angle, Eigen::Matrix2Xd& X, StateTape& tape, ReconstructionFailure* failure = nullptr) const;
+
   /// Newton blocks only: forget the last solution and continue from the initial
   /// configuration again (call before jumping to an angle on the other side of a dead point).
   void reset_continuation() const;
@@ -78,9 +83,12 @@ class SymbolicKinematics {
   struct Constants;
   bool compute_constants(const Eigen::Matrix2Xd& X0, std::vector<Constants>& constants, std::string* error,
                          int* joint) const;
-  bool solve_continued(double angle, Eigen::Matrix2Xd& X, StateDerivatives* D, ReconstructionFailure* failure) const;
-  bool solve_once(double angle, Eigen::Matrix2Xd& X, StateDerivatives* D, ReconstructionFailure* failure) const;
-  bool solve_block(int rule_index, Eigen::Matrix2Xd& X, StateDerivatives* D, ReconstructionFailure* failure) const;
+  bool solve_continued(double angle, Eigen::Matrix2Xd& X, StateDerivatives* D, StateTape* tape,
+                       ReconstructionFailure* failure) const;
+  bool solve_once(double angle, Eigen::Matrix2Xd& X, StateDerivatives* D, StateTape* tape,
+                  ReconstructionFailure* failure) const;
+  bool solve_block(int rule_index, Eigen::Matrix2Xd& X, StateDerivatives* D, StateTape* tape,
+                   ReconstructionFailure* failure) const;
   void build_dependencies();
 
   Linkage linkage_;
