@@ -170,7 +170,7 @@ std::vector<std::pair<int, int>> link_pairs(const Linkage& linkage) {
 
 std::vector<double> link_lengths(const Linkage& linkage) {
   std::vector<double> lengths;
-  for (const auto [i, j] : link_pairs(linkage))
+  for (const auto& [i, j] : link_pairs(linkage))
     lengths.push_back((linkage.joints[i].position - linkage.joints[j].position).norm());
   return lengths;
 }

@@ -39,13 +39,18 @@ TEST(JointOrder, EveryJointOnceAndInputsFirst) {
         const NewtonBlock& block = order.blocks[rule.block];
         for (const auto& link : block.links)
           for (int joint : {link.r0, link.r1})
-            if (std::find(block.joints.begin(), block.joints.end(), joint) == block.joints.end())
+            if (std::find(block.joints.begin(), block.joints.end(), joint) == block.joints.end()) {
               EXPECT_TRUE(seen[joint]) << name;
+            }
         for (int joint : block.joints) ++seen[joint];
         continue;
       }
-      if (rule.i >= 0) EXPECT_TRUE(seen[rule.i]) << name;
-      if (rule.j >= 0) EXPECT_TRUE(seen[rule.j]) << name;
+      if (rule.i >= 0) {
+        EXPECT_TRUE(seen[rule.i]) << name;
+      }
+      if (rule.j >= 0) {
+        EXPECT_TRUE(seen[rule.j]) << name;
+      }
       ++seen[rule.k];
     }
     for (int count : seen) EXPECT_EQ(count, 1) << name;
