@@ -147,6 +147,7 @@ TEST(LinkageFile, ReadRejectsUnderConstrainedAndSingularLinkages) {
   { std::ofstream(parallelogram_path) << parallelogram; }
   EXPECT_NO_THROW(read_linkage(parallelogram_path));
   EXPECT_THROW(read_linkage(dir / "missing.json"), InputError);
+  EXPECT_THROW(write_linkage(parse_linkage(kFourBar), dir / "no-such-dir" / "out.json"), InputError);
 }
 
 TEST(LinkageFile, AllExamplesLoad) {
