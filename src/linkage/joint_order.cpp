@@ -20,9 +20,18 @@ class Orderer {
         known_(linkage.joints.size(), false) {}
 
   JointOrder run() {
+    // The initial nodes (fixed joints and the motor joint) are all known before any link is
+    // completed, so that no rule is derived for one of them.
+    std::vector<int> initial;
     for (std::size_t k = 0; k < linkage_.joints.size(); ++k)
-      if (linkage_.joints[k].fixed) visit({RuleKind::kFixed, static_cast<int>(k)});
-    visit({RuleKind::kMotor, linkage_.motor.joint, linkage_.motor.center});
+      if (linkage_.joints[k].fixed) {
+        order_.rules.push_back({RuleKind::kFixed, static_cast<int>(k)});
+        initial.push_back(static_cast<int>(k));
+      }
+    order_.rules.push_back({RuleKind::kMotor, linkage_.motor.joint, linkage_.motor.center});
+    initial.push_back(linkage_.motor.joint);
+    for (int k : initial) mark_known(k);
+    for (int k : initial) complete_links(k);
     while (true) {
       // Algorithm 1: cycle through the active list until a whole pass makes no progress.
       std::size_t failures = 0;

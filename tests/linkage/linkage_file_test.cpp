@@ -137,7 +137,18 @@ TEST(LinkageFile, ReadRejectsUnderConstrainedAndSingularLinkages) {
     EXPECT_EQ(error.location(), "links[3]");
     EXPECT_NE(error.message().find("over-constrained"), std::string::npos) << error.what();
   }
-  // A redundant but consistent bar (parallel to the crank of a parallelogram) is accepted.
+  // The crank pin on a link with both fixed joints: it cannot turn.
+  const std::string grounded = with("[[\"A\", \"B\"],", "[[\"A\", \"B\", \"D\"],");
+  const auto grounded_path = dir / "grounded.json";
+  { std::ofstream(grounded_path) << grounded; }
+  try {
+    read_linkage(grounded_path);
+    FAIL() << "no error";
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.location(), "links[0]");
+    EXPECT_NE(error.message().find("over-constrained"), std::string::npos) << error.what();
+  }
+    // A redundant but consistent bar (parallel to the crank of a parallelogram) is accepted.
   const std::string parallelogram = R"({"format": "reconfig-linkage", "version": 1,
     "joints": [{"name": "A", "position": [0, 0], "fixed": true}, {"name": "D", "position": [4, 0], "fixed": true},
                {"name": "E", "position": [2, 0], "fixed": true},
