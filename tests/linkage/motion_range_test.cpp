@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -35,6 +36,17 @@ TEST(MotionRange, PeaucellierLipkinRocksBetweenItsAnalyticDeadPoints) {
   EXPECT_TRUE(range.contains(0.5 + 2 * kPi));
   EXPECT_FALSE(range.contains(2.0));
   EXPECT_EQ(range.upper_failure.kind, ReconstructionFailure::Kind::kCannotClose);
+  // Eq. (6) drops to zero at the dead point and is clear of it in between.
+  const Linkage linkage = test::example("peaucellier_lipkin.json");
+  const SymbolicKinematics kinematics(linkage, order_joints(linkage));
+  Eigen::Matrix2Xd X;
+  ASSERT_TRUE(kinematics.solve(range.upper, X));
+  const auto at_end = kinematics.singularity_distances(X);
+  EXPECT_LT(*std::min_element(at_end.begin(), at_end.end()), 1e-6);
+  ASSERT_TRUE(kinematics.solve(0.0, X));
+  const auto inside = kinematics.singularity_distances(X);
+  ASSERT_EQ(inside.size(), 3u);
+  EXPECT_GT(*std::min_element(inside.begin(), inside.end()), 0.1);
   const std::string text = range.describe();
   EXPECT_EQ(text,
             "rocks between -82.8° and 82.8° (at both ends: triangle (\"O\", \"A\") -> \"B\" flattens (a dead "
