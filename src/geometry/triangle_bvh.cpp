@@ -1,6 +1,7 @@
 #include "reconfig/geometry/triangle_bvh.h"
 
 #include <algorithm>
+#include <array>
 #include <cassert>
 #include <utility>
 
@@ -82,11 +83,13 @@ const Eigen::AlignedBox3d& TriangleBvh::bounds() const { return nodes_.front().b
 
 void TriangleBvh::for_each_overlapping(const Eigen::AlignedBox3d& box, const std::function<void(int f)>& visit) const {
   if (nodes_.front().begin == nodes_.front().end) return;
-  std::vector<int> stack{0};
-  stack.reserve(64);
-  while (!stack.empty()) {
-    const Node& node = nodes_[stack.back()];
-    stack.pop_back();
+  // Depth-first with a fixed stack: a median-split tree over n < 2^31 triangles is at most
+  // 31 levels deep, and the stack holds at most one pending sibling per level.
+  std::array<int, 64> stack;
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const Node& node = nodes_[stack[--top]];
     if (!node.box.intersects(box)) continue;
     if (node.left < 0) {
       for (int i = node.begin; i < node.end; ++i) {
@@ -94,8 +97,8 @@ void TriangleBvh::for_each_overlapping(const Eigen::AlignedBox3d& box, const std
         if (triangle_box(V_, F_, f).intersects(box)) visit(f);
       }
     } else {
-      stack.push_back(node.right);
-      stack.push_back(node.left);
+      stack[top++] = node.right;
+      stack[top++] = node.left;
     }
   }
 }

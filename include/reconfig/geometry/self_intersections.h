@@ -35,7 +35,8 @@ struct SelfIntersections {
 ///
 /// @param mesh       #V×3 vertices, #F×3 faces
 /// @param max_pairs  at most this many pairs are returned (≥ 0); with 0 only `truncated`
-///                   tells whether any improper pair exists (and the search stops at the first)
+///                   tells whether any improper pair exists (the search stops soon after the
+///                   first one found)
 /// @param progress   optional progress/cancel callback (fraction of faces processed)
 /// @throws InputError (location `face <f>`) if a face indexes a missing vertex or a vertex
 ///         it uses has a non-finite coordinate
