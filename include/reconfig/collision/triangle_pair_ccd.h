@@ -1,0 +1,68 @@
+#pragma once
+/// @file
+/// The narrow phase of the spacetime collision engine: the exact set of times at which two
+/// triangles with linearly moving vertices intersect (reconfigurables §5.4: the δt ⊂ ∆t of a
+/// candidate pair of spacetime primitives).
+///
+/// Why it works: the closed triangles' intersection status can only change at a contact
+/// event — a vertex of one on the other (6 vertex–face pairs) or an edge of each meeting
+/// (9 edge–edge pairs). Between events the triangles either stay apart or intersect through
+/// transversal piercings, which survive small perturbations. So the time step is bisected
+/// (coarsest pieces first): a piece on which all 15 contact tests (`ccd_primitives.h`) say
+/// "no contact" has one status throughout, decided by one exact static test
+/// (`geometry::triangles_intersect`) at its middle time — evaluated at rounded vertex
+/// positions, which is safe because the contact tests' "no" is certified robust to that
+/// rounding; a piece where a contact may occur is halved until it is shorter than the time
+/// tolerance, and then reported whole.
+
+#include <Eigen/Core>
+#include <array>
+#include <vector>
+
+namespace reconfig::collision {
+
+/// A closed time interval [lo, hi] (lo == hi for a single instant).
+struct TimeInterval {
+  double lo = 0, hi = 0;
+};
+
+/// Two triangles over one time step [t0, t1]; vertex k of a triangle moves linearly from
+/// `*_start[k]` (at t0) to `*_end[k]` (at t1). Triangles may be degenerate (segments, points).
+struct TrianglePairCcdRequest {
+  std::array<Eigen::Vector3d, 3> a_start, a_end;  ///< triangle A: 3 vertices at t0 and at t1
+  std::array<Eigen::Vector3d, 3> b_start, b_end;  ///< triangle B: 3 vertices at t0 and at t1
+  double t0 = 0, t1 = 1;                           ///< the time step (t0 < t1)
+  /// Distance tolerance of the contact tests (`PrimitiveCcdOptions::tolerance`, model units).
+  double distance_tolerance = 1e-6;
+  /// Pieces of the step where a contact may occur are refined down to this fraction of
+  /// the step, then reported whole.
+  double time_tolerance = 1e-6;
+  /// Work budget: pieces examined before the remaining undecided pieces are reported whole.
+  int max_pieces = 4096;
+  /// Work budget of each contact test (`PrimitiveCcdOptions::max_boxes`).
+  int max_boxes = 100'000;
+};
+
+/// When the triangles intersect.
+struct TrianglePairCcdResult {
+  /// Sorted, disjoint closed intervals within [t0, t1] covering every time at which the closed
+  /// triangles share a point (no false negatives). Inflation: a reported time is either a
+  /// true intersection time or lies in a piece of at most `time_tolerance`·(t1 − t0) (or, if
+  /// the budget ran out, a larger undecided piece) containing a time at which a vertex and
+  /// a triangle, or two edges, come within the contact tests' tolerance (L∞, see
+  /// `ccd_primitives.h`). Endpoints are rounded outward.
+  std::vector<TimeInterval> intervals;
+  bool budget_exhausted = false;  ///< some pieces were reported whole because of `max_pieces`
+  int pieces = 0;                 ///< pieces of the step examined (work measure)
+  int contact_tests = 0;          ///< vertex–face and edge–edge tests run (work measure)
+
+  bool any() const { return !intervals.empty(); }
+  /// Whether time t lies in a reported interval.
+  bool contains(double t) const;
+};
+
+/// The times in [t0, t1] at which the two moving closed triangles intersect, conservatively.
+/// Non-finite coordinates give no intersection.
+TrianglePairCcdResult triangle_pair_ccd(const TrianglePairCcdRequest& request);
+
+}  // namespace reconfig::collision
