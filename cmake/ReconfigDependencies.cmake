@@ -13,3 +13,7 @@ endif()
 if(RECONFIG_BUILD_BENCH)
   find_package(benchmark REQUIRED)
 endif()
+# The renderer: OpenGL through libepoxy (EGL surfaceless context for headless use), PNG via stb.
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(epoxy REQUIRED IMPORTED_TARGET epoxy)
+pkg_check_modules(stb REQUIRED IMPORTED_TARGET stb)
