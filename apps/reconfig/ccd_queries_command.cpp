@@ -38,6 +38,7 @@ int run_ccd_queries(const CcdQueriesOptions& options) {
   for (const collision::CcdQuery& query : queries) {
     collision::PrimitiveCcdOptions ccd;
     ccd.tolerance = options.tolerance;
+    ccd.earliest = false;  // only whether they touch
     // Coordinates that are not doubles were rounded: widen every decision by how far that can
     // move F (vertex–face: vertex + up to three face weights of magnitude ≤ 1; edge–edge: two
     // convex combinations), so the answer holds for the exact rational input.

@@ -180,37 +180,32 @@ PrimitiveCcdResult solve(const MovingQuad& q, const PrimitiveCcdOptions& options
     if (excluded || separated_along_directions(f, d0, e10, e20, box, margin)) continue;
 
     int split = -1;
-    if (result.hit) {
-      // Refining the first contact time: a box that cannot be excluded and is as short as the
-      // first accepted box bounds it; otherwise halve time only (splitting u, v here would
-      // tile every near-contact region, e.g. a vertex sliding on the face).
-      if (box.hi[0] - box.lo[0] <= refine_width || box.depth[0] >= kMaxDepth) {
-        result.toi = box.lo[0];
-        continue;
+    // Refining the first contact time: a box that cannot be excluded and is as short as the
+    // first accepted box bounds it.
+    if (result.hit && (box.hi[0] - box.lo[0] <= refine_width || box.depth[0] >= kMaxDepth)) {
+      result.toi = box.lo[0];
+      continue;
+    }
+    // Which dimension spreads F the most (change between opposite faces of the box).
+    double spread[3] = {0, 0, 0};
+    for (int c = 0; c < 8; ++c)
+      for (int dim = 0; dim < 3; ++dim) {
+        const int bit = 4 >> dim;  // t: 4, u: 2, v: 1
+        if (c & bit) continue;
+        for (int i = 0; i < 3; ++i) spread[dim] = std::max(spread[dim], std::abs(f[c | bit][i] - f[c][i]));
       }
-      split = 0;
-    } else {
-      // Which dimension spreads F the most (change between opposite faces of the box).
-      double spread[3] = {0, 0, 0};
-      for (int c = 0; c < 8; ++c)
-        for (int dim = 0; dim < 3; ++dim) {
-          const int bit = 4 >> dim;  // t: 4, u: 2, v: 1
-          if (c & bit) continue;
-          for (int i = 0; i < 3; ++i) spread[dim] = std::max(spread[dim], std::abs(f[c | bit][i] - f[c][i]));
-        }
-      double best = -1;
-      for (int dim = 0; dim < 3; ++dim)
-        if (box.depth[dim] < kMaxDepth && spread[dim] > best) {
-          best = spread[dim];
-          split = dim;
-        }
-      if (small || split < 0) {  // a contact within the tolerance, or no resolution left
-        result.hit = true;
-        result.toi = box.lo[0];
-        refine_width = box.hi[0] - box.lo[0];
-        if (!options.earliest) return result;
-        continue;  // look for earlier contacts in the boxes still waiting
+    double best = -1;
+    for (int dim = 0; dim < 3; ++dim)
+      if (box.depth[dim] < kMaxDepth && spread[dim] > best) {
+        best = spread[dim];
+        split = dim;
       }
+    if (small || split < 0) {  // a contact within the tolerance, or no resolution left
+      if (!result.hit) refine_width = box.hi[0] - box.lo[0];
+      result.hit = true;
+      result.toi = std::min(result.toi, box.lo[0]);
+      if (!options.earliest) return result;
+      continue;  // look for earlier contacts in the boxes still waiting
     }
 
     const double mid = 0.5 * (box.lo[split] + box.hi[split]);
