@@ -23,6 +23,7 @@ void add_info_command(CLI::App& app, int& exit_code);
 void add_check_command(CLI::App& app, int& exit_code);
 void add_pose_command(CLI::App& app, int& exit_code);
 void add_linkage_command(CLI::App& app, int& exit_code);
+void add_render_command(CLI::App& app, int& exit_code);
 void add_ccd_queries_command(CLI::App& app, int& exit_code);
 
 }  // namespace reconfig::cli

@@ -377,6 +377,16 @@ void Renderer::draw(const DrawList& list, const view::Camera& camera, int width,
           push(edges, corner(a | (1 << bit)), edge);
         }
     glUseProgram(r.flat_program);
+    if (b.on_top) {
+      // The hidden part first, fainter and without depth test; then the visible part on top.
+      std::vector<ColoredVertex> faint_faces = faces, faint_edges = edges;
+      for (ColoredVertex& v : faint_faces) v.a *= 0.6f;
+      for (ColoredVertex& v : faint_edges) v.a *= 0.6f;
+      glDisable(GL_DEPTH_TEST);
+      r.draw_flat(faint_faces, GL_TRIANGLES);
+      r.draw_flat(faint_edges, GL_LINES);
+      glEnable(GL_DEPTH_TEST);
+    }
     r.draw_flat(faces, GL_TRIANGLES);
     r.draw_flat(edges, GL_LINES);
   }

@@ -63,10 +63,19 @@ void Camera::zoom(double factor) {
 void Camera::frame_all(const Eigen::AlignedBox3d& box, double aspect, double margin) {
   if (box.isEmpty()) return;
   pitch = std::clamp(pitch, -kMaxPitch, kMaxPitch);
-  const double radius = std::max(0.5 * box.diagonal().norm(), 1e-6) * margin;
-  const double half_angle = 0.5 * std::min(fov_y, fov_x(aspect));
   target = box.center();
-  distance = radius / std::sin(half_angle);
+  // Keep the direction, and find the smallest distance that puts every corner of the box (a
+  // convex set: the corners suffice) inside the frustum scaled down by `margin`.
+  const Eigen::Vector3d f = forward(), r = right(), u = up();
+  const double tan_y = std::tan(fov_y / 2) / margin, tan_x = std::tan(fov_x(aspect) / 2) / margin;
+  const double radius = std::max(0.5 * box.diagonal().norm(), 1e-6);
+  double needed = 0;
+  for (int c = 0; c < 8; ++c) {
+    const Eigen::Vector3d o = box.corner(static_cast<Eigen::AlignedBox3d::CornerType>(c)) - target;
+    // A corner at depth distance + o·f is visible when |o·r| ≤ depth tan_x and |o·u| ≤ depth tan_y.
+    needed = std::max({needed, std::abs(o.dot(r)) / tan_x - o.dot(f), std::abs(o.dot(u)) / tan_y - o.dot(f)});
+  }
+  distance = std::max(needed, 1.05 * radius);  // the eye stays outside the box's sphere
   near_plane = std::max(distance - radius, 0.0) * 0.5 + distance * 1e-3;
   far_plane = (distance + radius) * 20;  // room for the ground grid around the box
 }

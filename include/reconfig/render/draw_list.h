@@ -20,12 +20,14 @@ struct MeshItem {
 };
 
 /// A transparent axis-aligned box with opaque edges (collision interval boxes). Pulsating
-/// boxes vary their opacity with `DrawList::seconds` (period 1 s).
+/// boxes vary their opacity with `DrawList::seconds` (period 1 s). Boxes `on_top` show
+/// through the parts (collision boxes lie inside them); parts still dim the hidden share.
 struct BoxItem {
   Eigen::AlignedBox3d box;
   Eigen::Vector3f color{0.95f, 0.15f, 0.1f};
   float opacity = 0.35f;
   bool pulsate = true;
+  bool on_top = true;
 };
 
 /// A polyline (a curve, a trajectory) or, with `strip = false`, independent segments

@@ -50,10 +50,10 @@ struct Camera {
   /// Multiplies the distance by `factor` (> 0); near and far planes follow.
   void zoom(double factor);
 
-  /// Keeps yaw, pitch and fov, and chooses target and distance so that the whole `box`
-  /// (its bounding sphere) is visible in a viewport of that aspect ratio, with `margin`
-  /// (≥ 1) extra room. Sets near and far planes around the box. An empty box leaves the
-  /// camera unchanged.
+  /// Keeps yaw, pitch and fov, aims at the center of `box` and chooses the smallest distance
+  /// at which all of the box is visible in a viewport of that aspect ratio, with `margin`
+  /// (≥ 1) extra room, and the eye outside the box's bounding sphere. Sets near and far
+  /// planes around the box. An empty box leaves the camera unchanged.
   void frame_all(const Eigen::AlignedBox3d& box, double aspect, double margin = 1.1);
 };
 
