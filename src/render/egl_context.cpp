@@ -3,6 +3,7 @@
 #include <epoxy/egl.h>
 #include <epoxy/gl.h>
 
+#include <cstdio>
 #include <cstring>
 #include <string>
 
@@ -20,7 +21,11 @@ std::string egl_error_name(EGLint error) {
     case EGL_BAD_DISPLAY: return "EGL_BAD_DISPLAY";
     case EGL_BAD_MATCH: return "EGL_BAD_MATCH";
     case EGL_BAD_PARAMETER: return "EGL_BAD_PARAMETER";
-    default: return "EGL error 0x" + [&] { char b[16]; std::snprintf(b, sizeof b, "%x", error); return std::string(b); }();
+    default: {
+      char code[32];
+      std::snprintf(code, sizeof code, "EGL error 0x%04x", static_cast<unsigned>(error));
+      return code;
+    }
   }
 }
 

@@ -4,7 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -131,6 +131,14 @@ void cone_mesh(const Eigen::Vector3d& base, const Eigen::Vector3d& tip, double r
 
 Eigen::Matrix4f to_float(const Eigen::Matrix4d& m) { return m.cast<float>(); }
 
+void check_gl(const char* during) {
+  if (const GLenum error = glGetError(); error != GL_NO_ERROR) {
+    char code[16];
+    std::snprintf(code, sizeof code, "0x%04x", error);
+    throw std::runtime_error(std::string("render: OpenGL error ") + code + " while " + during);
+  }
+}
+
 }  // namespace
 
 struct Renderer::Impl {
@@ -185,8 +193,7 @@ Renderer::Renderer(const RendererOptions& options) : impl_(std::make_unique<Impl
   GLint max_samples = 0;
   glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
   r.samples = options.samples > 1 ? std::min(options.samples, static_cast<int>(max_samples)) : 0;
-  if (const GLenum error = glGetError(); error != GL_NO_ERROR)
-    throw std::runtime_error("render: OpenGL error 0x" + std::to_string(error) + " while creating the renderer");
+  check_gl("creating the renderer");
 }
 
 Renderer::~Renderer() {
@@ -393,8 +400,7 @@ void Renderer::draw(const DrawList& list, const view::Camera& camera, int width,
   glDepthMask(GL_TRUE);
   glBindVertexArray(0);
   glUseProgram(0);
-  if (const GLenum error = glGetError(); error != GL_NO_ERROR)
-    throw std::runtime_error("render: OpenGL error 0x" + std::to_string(error) + " while drawing");
+  check_gl("drawing");
 }
 
 Image Renderer::render(const DrawList& list, const view::Camera& camera, int width, int height) {
@@ -415,8 +421,7 @@ Image Renderer::render(const DrawList& list, const view::Camera& camera, int wid
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, bottom_up.data());
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  if (const GLenum error = glGetError(); error != GL_NO_ERROR)
-    throw std::runtime_error("render: OpenGL error 0x" + std::to_string(error) + " while reading pixels");
+  check_gl("reading pixels");
   const std::size_t row = static_cast<std::size_t>(width) * 4;
   for (int y = 0; y < height; ++y)
     std::copy_n(bottom_up.begin() + static_cast<std::ptrdiff_t>((height - 1 - y) * row), row,

@@ -76,7 +76,8 @@ TEST(Camera, FrameAllKeepsEveryCornerOnScreen) {
       EXPECT_LT(ndc.z(), 1.0);
       largest = std::max({largest, std::abs(ndc.x()), std::abs(ndc.y())});
     }
-    EXPECT_GT(largest, 0.4) << "the box should fill a good part of the view";
+    // The tightest fit: the outermost corner touches the frame shrunk by the margin 1.1.
+    EXPECT_NEAR(largest, 1 / 1.1, 1e-9) << "aspect " << aspect;
   }
 }
 
