@@ -1,12 +1,16 @@
 // reconfig check SCENE — spacetime collision detection over every transition (FORMATS.md).
 
 #include <fmt/format.h>
+#include <tbb/global_control.h>
 
+#include <chrono>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "command.h"
 #include "progress_bar.h"
+#include "reconfig/collision/detect_collisions.h"
 #include "reconfig/collision/reference_check.h"
 #include "reconfig/common/input_error.h"
 #include "reconfig/scene/scene_file.h"
@@ -17,10 +21,29 @@ namespace {
 struct CheckOptions {
   std::string scene;
   bool json = false;
+  bool reference = false;
+  double tolerance = 1e-3;
+  int dop = 28;
+  bool conservative = false;
+  int threads = 0;
   int samples = 1000;
   std::vector<std::string> transitions;
   std::string report;
   std::string json_out;
+};
+
+/// What either detector found, and how it was found.
+struct CheckOutcome {
+  std::vector<collision::TransitionCollisions> transitions;
+  std::string method;           ///< one line for people
+  nlohmann::ordered_json facts;  ///< the same for scripts
+  double seconds = 0;
+
+  bool any_collision() const {
+    for (const auto& t : transitions)
+      if (!t.intervals.empty()) return true;
+    return false;
+  }
 };
 
 std::string part_names(const scene::Reconfigurable& scene, const collision::CollisionInterval& ci) {
@@ -29,11 +52,11 @@ std::string part_names(const scene::Reconfigurable& scene, const collision::Coll
   return names;
 }
 
-nlohmann::ordered_json to_json(const scene::Reconfigurable& scene, const collision::ReferenceCheckResult& result) {
-  nlohmann::ordered_json root;
-  root["samples"] = result.samples;
+nlohmann::ordered_json to_json(const scene::Reconfigurable& scene, const CheckOutcome& outcome) {
+  nlohmann::ordered_json root = outcome.facts;
+  root["seconds"] = outcome.seconds;
   root["transitions"] = nlohmann::ordered_json::array();
-  for (const auto& transition : result.transitions) {
+  for (const auto& transition : outcome.transitions) {
     nlohmann::ordered_json intervals = nlohmann::ordered_json::array();
     for (const auto& ci : transition.intervals) {
       nlohmann::ordered_json parts = nlohmann::ordered_json::array();
@@ -44,7 +67,8 @@ nlohmann::ordered_json to_json(const scene::Reconfigurable& scene, const collisi
                            {"parts", parts},
                            {"box_min", {lo.x(), lo.y(), lo.z()}},
                            {"box_max", {hi.x(), hi.y(), hi.z()}},
-                           {"containment", ci.containment}});
+                           {"containment", ci.containment},
+                           {"possible", ci.possible}});
     }
     root["transitions"].push_back({{"name", transition.name}, {"intervals", intervals}});
   }
@@ -57,11 +81,17 @@ std::string box_text(const Eigen::AlignedBox3d& box) {
                      hi.z());
 }
 
-std::string text_report(const scene::Reconfigurable& scene, const collision::ReferenceCheckResult& result,
-                        const std::string& file) {
-  std::string out = fmt::format("{}: {} parts, {} states, {} transitions ({} samples per transition)\n", file,
-                                scene.parts.size(), scene.states.size(), scene.transitions.size(), result.samples);
-  for (const auto& transition : result.transitions) {
+std::string qualifiers(const collision::CollisionInterval& ci) {
+  std::string text;
+  if (ci.containment) text += " (one inside the other)";
+  if (ci.possible) text += " (possible: within the tolerance)";
+  return text;
+}
+
+std::string text_report(const scene::Reconfigurable& scene, const CheckOutcome& outcome, const std::string& file) {
+  std::string out = fmt::format("{}: {} parts, {} states, {} transitions ({}; {:.3f} s)\n", file, scene.parts.size(),
+                                scene.states.size(), scene.transitions.size(), outcome.method, outcome.seconds);
+  for (const auto& transition : outcome.transitions) {
     const auto& tr = scene.transitions[transition.transition];
     out += fmt::format("transition \"{}\" ({} → {}): ", tr.name, tr.from, tr.to);
     if (transition.intervals.empty()) {
@@ -71,18 +101,17 @@ std::string text_report(const scene::Reconfigurable& scene, const collision::Ref
     out += fmt::format("{} collision interval{}\n", transition.intervals.size(),
                        transition.intervals.size() == 1 ? "" : "s");
     for (const auto& ci : transition.intervals)
-      out += fmt::format("  t = {:.3f} – {:.3f}  {}{}  at {}\n", ci.t0, ci.t1, part_names(scene, ci),
-                         ci.containment ? " (one inside the other)" : "", box_text(ci.box));
+      out += fmt::format("  t = {:.3f} – {:.3f}  {}{}  at {}\n", ci.t0, ci.t1, part_names(scene, ci), qualifiers(ci),
+                         box_text(ci.box));
   }
   return out;
 }
 
-std::string markdown_report(const scene::Reconfigurable& scene, const collision::ReferenceCheckResult& result,
-                            const std::string& file) {
+std::string markdown_report(const scene::Reconfigurable& scene, const CheckOutcome& outcome, const std::string& file) {
   std::string out = fmt::format("# Collision report: `{}`\n\n", file);
-  out += fmt::format("{} parts, {} states, {} transitions; {} time samples per transition.\n\n", scene.parts.size(),
-                     scene.states.size(), scene.transitions.size(), result.samples);
-  for (const auto& transition : result.transitions) {
+  out += fmt::format("{} parts, {} states, {} transitions; {}.\n\n", scene.parts.size(), scene.states.size(),
+                     scene.transitions.size(), outcome.method);
+  for (const auto& transition : outcome.transitions) {
     const auto& tr = scene.transitions[transition.transition];
     out += fmt::format("## Transition `{}` ({} → {})\n\n", tr.name, tr.from, tr.to);
     if (transition.intervals.empty()) {
@@ -91,8 +120,8 @@ std::string markdown_report(const scene::Reconfigurable& scene, const collision:
     }
     out += "| from t | to t | parts | where (box) |\n|---|---|---|---|\n";
     for (const auto& ci : transition.intervals)
-      out += fmt::format("| {:.3f} | {:.3f} | {}{} | {} |\n", ci.t0, ci.t1, part_names(scene, ci),
-                         ci.containment ? " (nested)" : "", box_text(ci.box));
+      out += fmt::format("| {:.3f} | {:.3f} | {}{} | {} |\n", ci.t0, ci.t1, part_names(scene, ci), qualifiers(ci),
+                         box_text(ci.box));
     out += "\n";
   }
   return out;
@@ -104,25 +133,64 @@ void write_file(const std::string& path, const std::string& text) {
   if (!out) throw InputError(path, "", "could not write the file");
 }
 
-int run_check(const CheckOptions& options) {
-  const scene::Reconfigurable scene = scene::load_scene(options.scene);
+collision::DopFamily dop_family(int dop) {
+  return dop == 8 ? collision::DopFamily::k8 : dop == 80 ? collision::DopFamily::k80 : collision::DopFamily::k28;
+}
+
+CheckOutcome run_reference(const scene::Reconfigurable& scene, const CheckOptions& options,
+                           const std::vector<int>& transitions, const ProgressCallback& progress) {
   collision::ReferenceCheckRequest request;
   request.samples = options.samples;
+  request.transitions = transitions;
+  request.progress = progress;
+  const collision::ReferenceCheckResult result = collision::reference_check(scene, request);
+  return {result.transitions, fmt::format("reference check, {} samples per transition", options.samples),
+          {{"method", "reference"}, {"samples", options.samples}}, 0};
+}
+
+CheckOutcome run_engine(const scene::Reconfigurable& scene, const CheckOptions& options,
+                        const std::vector<int>& transitions, const ProgressCallback& progress) {
+  collision::CollisionRequest request;
+  request.detector.tolerance = options.tolerance;
+  request.detector.dop = dop_family(options.dop);
+  request.detector.conservative = options.conservative;
+  request.transitions = transitions;
+  request.progress = progress;
+  const collision::CollisionResult result = collision::detect_collisions(scene, request);
+  return {result.transitions,
+          fmt::format("spacetime engine, {}-DOP, tolerance {:g}{}", options.dop, options.tolerance,
+                      options.conservative ? ", conservative" : ""),
+          {{"method", "engine"},
+           {"dop", options.dop},
+           {"tolerance", options.tolerance},
+           {"conservative", options.conservative},
+           {"proxy_samples", result.stats.proxy_samples},
+           {"narrow_phase_tests", result.stats.narrow_phase}},
+          0};
+}
+
+int run_check(const CheckOptions& options) {
+  std::optional<tbb::global_control> threads;
+  if (options.threads > 0) threads.emplace(tbb::global_control::max_allowed_parallelism, options.threads);
+  const scene::Reconfigurable scene = scene::load_scene(options.scene);
+  std::vector<int> transitions;
   for (const std::string& name : options.transitions) {
     const int index = scene.find_transition(name);
     if (index < 0) throw InputError(options.scene, "", fmt::format("no transition named \"{}\"", name));
-    request.transitions.push_back(index);
+    transitions.push_back(index);
   }
   ProgressBar bar("checking", !options.json && stderr_is_terminal());
-  request.progress = bar.callback();
-  const collision::ReferenceCheckResult result = collision::reference_check(scene, request);
+  const auto start = std::chrono::steady_clock::now();
+  CheckOutcome outcome = options.reference ? run_reference(scene, options, transitions, bar.callback())
+                                           : run_engine(scene, options, transitions, bar.callback());
+  outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   bar.finish();
-  const nlohmann::ordered_json json = to_json(scene, result);
+  const nlohmann::ordered_json json = to_json(scene, outcome);
   if (options.json) fmt::print("{}\n", json.dump(2));
-  else fmt::print("{}", text_report(scene, result, options.scene));
+  else fmt::print("{}", text_report(scene, outcome, options.scene));
   if (!options.json_out.empty()) write_file(options.json_out, json.dump(2) + "\n");
-  if (!options.report.empty()) write_file(options.report, markdown_report(scene, result, options.scene));
-  return result.any_collision() ? kExitCollisions : kExitOk;
+  if (!options.report.empty()) write_file(options.report, markdown_report(scene, outcome, options.scene));
+  return outcome.any_collision() ? kExitCollisions : kExitOk;
 }
 
 }  // namespace
@@ -133,7 +201,18 @@ void add_check_command(CLI::App& app, int& exit_code) {
       "check", "Spacetime collision detection over every transition (exit 0: none, 1: collisions, 2: bad input)");
   command->add_option("scene", options->scene, "Scene file (reconfig-scene JSON)")->required();
   command->add_flag("--json", options->json, "Print the result as JSON");
-  command->add_option("--samples", options->samples, "Time samples per transition")
+  command->add_flag("--reference", options->reference,
+                    "Use the reference check (dense time sampling, exact static tests) instead of the engine");
+  command->add_option("--tolerance", options->tolerance, "Largest distance between proxy and true motion (engine)")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  command->add_option("--dop", options->dop, "Spacetime k-DOP family of the engine's BVH")
+      ->check(CLI::IsMember({8, 28, 80}))
+      ->capture_default_str();
+  command->add_flag("--conservative", options->conservative,
+                    "Engine: also report near misses the true motion may turn into collisions (never misses one)");
+  command->add_option("--threads", options->threads, "Worker threads (default: all cores)")->check(CLI::NonNegativeNumber);
+  command->add_option("--samples", options->samples, "Time samples per transition (reference check)")
       ->check(CLI::Range(2, 10000000))
       ->capture_default_str();
   command->add_option("--transition", options->transitions, "Only check these transitions (repeatable)");

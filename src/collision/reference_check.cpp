@@ -79,7 +79,7 @@ std::vector<CollisionInterval> merge_samples(const std::vector<SampleContact>& c
     for (const SampleContact* c : list) {  // ascending sample order
       if (c->sample != last + 1) {
         if (last >= 0) intervals.push_back(current);
-        current = CollisionInterval{sample_time(c->sample, samples), 0, {pair.first, pair.second}, {}, false};
+        current = CollisionInterval{sample_time(c->sample, samples), 0, {pair.first, pair.second}, {}, false, false, {}};
       }
       current.t1 = sample_time(c->sample, samples);
       current.box.extend(c->box);

@@ -4,6 +4,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <array>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,14 @@ struct CollisionInterval {
   Eigen::AlignedBox3d box;
   /// True when the parts overlap without their surfaces crossing (one inside the other).
   bool containment = false;
+  /// Conservative detection only: every contact merged here is a near miss of the proxies
+  /// that the true motion may turn into a collision (no confirmed intersection).
+  bool possible = false;
+  /// The triangle pairs involved (part a, triangle a, part b, triangle b); empty for the
+  /// reference check and for pure containment.
+  std::vector<std::array<int, 4>> triangles;
+
+  double duration() const { return t1 - t0; }
 };
 
 /// All collision intervals of one transition, ordered by (t0, parts).

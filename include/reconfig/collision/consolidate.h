@@ -1,0 +1,25 @@
+#pragma once
+/// @file
+/// Turning raw narrow-phase contacts into collision intervals a designer can read
+/// (reconfigurables §4.1): contacts whose time extents overlap or touch and whose spatial
+/// boxes overlap merge into one conservative interval.
+
+#include <limits>
+#include <vector>
+
+#include "reconfig/collision/collision_interval.h"
+#include "reconfig/collision/triangle_contact.h"
+
+namespace reconfig::collision {
+
+/// Merges overlapping contacts and containments into collision intervals.
+/// @param max_duration  a merged interval never spans more time than this (default: no limit,
+///                      the maximal consolidation the timeline shows; the 3D view uses one
+///                      frame so its boxes stay tight). A single contact longer than the limit
+///                      stays whole.
+/// @return intervals sorted by (t0, parts)
+std::vector<CollisionInterval> consolidate(const std::vector<TriangleContact>& contacts,
+                                           const std::vector<Containment>& containments,
+                                           double max_duration = std::numeric_limits<double>::infinity());
+
+}  // namespace reconfig::collision

@@ -1,0 +1,45 @@
+#include "reconfig/collision/detect_collisions.h"
+
+#include <algorithm>
+
+#include "reconfig/collision/consolidate.h"
+
+namespace reconfig::collision {
+
+bool CollisionResult::any_collision() const {
+  return std::any_of(transitions.begin(), transitions.end(),
+                     [](const TransitionCollisions& t) { return !t.intervals.empty(); });
+}
+
+CollisionResult detect_collisions(const scene::Reconfigurable& scene, const CollisionRequest& request) {
+  std::vector<int> transitions = request.transitions;
+  if (transitions.empty())
+    for (int i = 0; i < static_cast<int>(scene.transitions.size()); ++i) transitions.push_back(i);
+  CollisionResult result;
+  const BodyTrees trees = build_body_trees(scene);
+  for (std::size_t i = 0; i < transitions.size(); ++i) {
+    SpacetimeDetector detector(transitions[i], request.detector);
+    DetectCallbacks callbacks;
+    if (request.progress)
+      callbacks.progress = [&](double f) { return request.progress((static_cast<double>(i) + f) / transitions.size()); };
+    if (!detector.detect(scene, trees, callbacks)) {
+      result.cancelled = true;
+      return result;
+    }
+    const std::string& name = scene.transitions[transitions[i]].name;
+    result.transitions.push_back({transitions[i], name, consolidate(detector.contacts(), detector.containments())});
+    result.frames.push_back(
+        {transitions[i], name, consolidate(detector.contacts(), detector.containments(), request.frame)});
+    const DetectionStats& s = detector.last_stats();
+    result.stats.bound_tests += s.bound_tests;
+    result.stats.narrow_phase += s.narrow_phase;
+    result.stats.narrow_pieces += s.narrow_pieces;
+    result.stats.contact_tests += s.contact_tests;
+    result.stats.containment_tests += s.containment_tests;
+    result.stats.levels = std::max(result.stats.levels, s.levels);
+    result.stats.proxy_samples += s.proxy_samples;
+  }
+  return result;
+}
+
+}  // namespace reconfig::collision

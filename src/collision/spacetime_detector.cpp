@@ -1,0 +1,481 @@
+#include "reconfig/collision/spacetime_detector.h"
+
+#include <tbb/combinable.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <map>
+#include <set>
+
+#include "reconfig/collision/triangle_pair_ccd.h"
+#include "reconfig/geometry/point_in_solid.h"
+#include "reconfig/geometry/triangle_intersection.h"
+
+namespace reconfig::collision {
+namespace {
+
+using MovingTriangle = std::array<Eigen::Vector3d, 3>;
+
+/// A proxy's placement at one time: between two samples the vertices interpolate linearly,
+/// which is an affine (not rigid) map.
+struct Affine {
+  Eigen::Matrix3d L = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d x = Eigen::Vector3d::Zero();
+  Eigen::Vector3d operator()(const Eigen::Vector3d& v) const { return L * v + x; }
+  bool operator==(const Affine& o) const { return L == o.L && x == o.x; }
+};
+
+Affine proxy_map(const PartProxy& proxy, double t) {
+  const int k = proxy.step_of(t);
+  const double t0 = proxy.times[k], t1 = proxy.times[k + 1];
+  const Eigen::Isometry3d& P0 = proxy.poses[k];
+  const Eigen::Isometry3d& P1 = proxy.poses[k + 1];
+  if (t <= t0) return {P0.linear(), P0.translation()};
+  if (t >= t1) return {P1.linear(), P1.translation()};
+  const double s = (t - t0) / (t1 - t0);
+  return {(1 - s) * P0.linear() + s * P1.linear(), (1 - s) * P0.translation() + s * P1.translation()};
+}
+
+/// Both parts of a pair placed at the merged sample times of their proxies over a range:
+/// on every step between consecutive times both parts' vertices move linearly.
+struct PairTimeline {
+  int a = 0, b = 0;
+  std::vector<double> times;
+  std::vector<Affine> maps[2];
+  bool moving[2] = {false, false};  ///< some map differs from the first
+};
+
+PairTimeline make_timeline(const std::vector<PartProxy>& proxies, int a, int b, double t0, double t1) {
+  PairTimeline line;
+  line.a = a;
+  line.b = b;
+  std::vector<double> times = {t0, t1};
+  for (int part : {a, b})
+    for (double t : proxies[part].times)
+      if (t > t0 && t < t1) times.push_back(t);
+  std::sort(times.begin(), times.end());
+  times.erase(std::unique(times.begin(), times.end()), times.end());
+  line.times = times;
+  for (int side = 0; side < 2; ++side) {
+    const PartProxy& proxy = proxies[side == 0 ? a : b];
+    for (double t : times) line.maps[side].push_back(proxy_map(proxy, t));
+    for (const Affine& m : line.maps[side]) line.moving[side] = line.moving[side] || !(m == line.maps[side][0]);
+  }
+  return line;
+}
+
+struct WorkItem {
+  int pair = 0;
+  int node_a = 0, node_b = 0;
+  int s0 = 0, s1 = 0;  ///< sample range of the pair timeline (s1 > s0)
+};
+
+/// Everything the traversal reads, shared by all threads.
+template <DopFamily family>
+struct Traversal {
+  using Dop = Kdop<family>;
+  static constexpr int K = Dop::kAxes;
+
+  const scene::Reconfigurable& scene;
+  const BodyTrees& trees;
+  const std::vector<PartProxy>& proxies;
+  const DetectorOptions& options;
+  std::vector<PairTimeline> lines;
+  /// Per pair, side and sample: u_i = Lᵀ ds_i and the offset ds_i·x + dt_i τ of each axis.
+  struct SampleAxes {
+    std::array<Eigen::Vector3d, K> u;
+    std::array<double, K> offset;
+  };
+  std::vector<std::array<std::vector<SampleAxes>, 2>> axes;
+  double pad = 0;  ///< absolute padding against rounding in bound arithmetic
+
+  Traversal(const scene::Reconfigurable& s, const BodyTrees& t, const std::vector<PartProxy>& p,
+            const DetectorOptions& o, std::vector<PairTimeline> l)
+      : scene(s), trees(t), proxies(p), options(o), lines(std::move(l)) {
+    const auto& dirs = dop_axes<family>();
+    double scale = 1;
+    axes.resize(lines.size());
+    for (std::size_t i = 0; i < lines.size(); ++i)
+      for (int side = 0; side < 2; ++side)
+        for (std::size_t k = 0; k < lines[i].times.size(); ++k) {
+          const Affine& m = lines[i].maps[side][k];
+          SampleAxes sample;
+          for (int j = 0; j < K; ++j) {
+            const Eigen::Vector3d ds = dirs[j].template head<3>();
+            sample.u[j] = m.L.transpose() * ds;
+            sample.offset[j] = ds.dot(m.x) + dirs[j][3] * lines[i].times[k];
+          }
+          scale = std::max(scale, m.x.cwiseAbs().maxCoeff());
+          axes[i][side].push_back(sample);
+        }
+    for (int p2 = 0; p2 < static_cast<int>(scene.parts.size()); ++p2)
+      scale = std::max(scale, scene.parts[p2].mesh.V.cwiseAbs().maxCoeff());
+    pad = 64 * std::numeric_limits<double>::epsilon() * scale;
+  }
+
+  const geometry::Mesh& mesh(int pair, int side) const { return scene.parts[side == 0 ? lines[pair].a : lines[pair].b].mesh; }
+  const BodyTree& tree(int pair, int side) const { return *trees[side == 0 ? lines[pair].a : lines[pair].b]; }
+
+  Dop bound(int pair, int side, int node_index, int s0, int s1) const {
+    const BodyTree::Node& node = tree(pair, side).node(node_index);
+    const auto& samples = axes[pair][side];
+    Dop dop;
+    if (node.leaf()) {
+      const geometry::Mesh& m = mesh(pair, side);
+      for (int c = 0; c < 3; ++c) {
+        const Eigen::Vector3d v = m.V.row(m.F(node.triangle, c));
+        for (int s = s0; s <= s1; ++s)
+          for (int j = 0; j < K; ++j) {
+            const double value = samples[s].u[j].dot(v) + samples[s].offset[j];
+            dop.lo[j] = std::min(dop.lo[j], value);
+            dop.hi[j] = std::max(dop.hi[j], value);
+          }
+      }
+    } else {
+      for (int s = s0; s <= s1; ++s)
+        for (int j = 0; j < K; ++j) {
+          const Eigen::Vector3d& u = samples[s].u[j];
+          const double center = u.dot(node.center) + samples[s].offset[j];
+          const double reach = u.cwiseAbs().dot(node.half);
+          dop.lo[j] = std::min(dop.lo[j], center - reach);
+          dop.hi[j] = std::max(dop.hi[j], center + reach);
+        }
+    }
+    for (int j = 0; j < K; ++j) {
+      dop.lo[j] -= pad;
+      dop.hi[j] += pad;
+    }
+    if (options.conservative) dop.inflate(proxies[side == 0 ? lines[pair].a : lines[pair].b].deviation);
+    return dop;
+  }
+
+  MovingTriangle corners(int pair, int side, int triangle, int s) const {
+    const geometry::Mesh& m = mesh(pair, side);
+    const Affine& map = lines[pair].maps[side][s];
+    return {map(m.V.row(m.F(triangle, 0))), map(m.V.row(m.F(triangle, 1))), map(m.V.row(m.F(triangle, 2)))};
+  }
+};
+
+double spatial_extent(const auto& dop) {
+  return std::max({dop.hi[0] - dop.lo[0], dop.hi[1] - dop.lo[1], dop.hi[2] - dop.lo[2]});
+}
+
+Eigen::AlignedBox3d triangle_box_at(const MovingTriangle& p0, const MovingTriangle& p1, double mu0, double mu1) {
+  Eigen::AlignedBox3d box;
+  for (int c = 0; c < 3; ++c)
+    for (double mu : {mu0, mu1}) box.extend((1 - mu) * p0[c] + mu * p1[c]);
+  return box;
+}
+
+Eigen::AlignedBox3d meeting_box(const Eigen::AlignedBox3d& a, const Eigen::AlignedBox3d& b) {
+  const Eigen::AlignedBox3d both = a.intersection(b);
+  return both.isEmpty() ? a.merged(b) : both;  // empty only through rounding
+}
+
+/// Processes one work item: prunes it, splits it into `next`, or runs the narrow phase.
+template <DopFamily family>
+void process(const Traversal<family>& tr, const WorkItem& item, std::vector<WorkItem>& next,
+             std::vector<TriangleContact>& found, DetectionStats& stats) {
+  ++stats.bound_tests;
+  const auto da = tr.bound(item.pair, 0, item.node_a, item.s0, item.s1);
+  const auto db = tr.bound(item.pair, 1, item.node_b, item.s0, item.s1);
+  if (!da.overlaps(db)) return;
+  const PairTimeline& line = tr.lines[item.pair];
+  const BodyTree::Node& na = tr.tree(item.pair, 0).node(item.node_a);
+  const BodyTree::Node& nb = tr.tree(item.pair, 1).node(item.node_b);
+  const bool single_step = item.s1 - item.s0 == 1;
+  const auto split_time = [&] {
+    const int middle = (item.s0 + item.s1) / 2;
+    next.push_back({item.pair, item.node_a, item.node_b, item.s0, middle});
+    next.push_back({item.pair, item.node_a, item.node_b, middle, item.s1});
+  };
+  if (na.leaf() && nb.leaf()) {
+    const double t0 = line.times[item.s0], t1 = line.times[item.s1];
+    TriangleContact contact{line.a, na.triangle, line.b, nb.triangle, t0, t1, {}, false};
+    if (single_step) {
+      ++stats.narrow_phase;
+      const MovingTriangle a0 = tr.corners(item.pair, 0, na.triangle, item.s0);
+      const MovingTriangle a1 = tr.corners(item.pair, 0, na.triangle, item.s1);
+      const MovingTriangle b0 = tr.corners(item.pair, 1, nb.triangle, item.s0);
+      const MovingTriangle b1 = tr.corners(item.pair, 1, nb.triangle, item.s1);
+      TrianglePairCcdRequest request;
+      request.a_start = a0;
+      request.a_end = a1;
+      request.b_start = b0;
+      request.b_end = b1;
+      request.time_tolerance = 1.0 / 32;  // of the step: pieces with a contact event are reported whole below that
+      request.distance_tolerance = 1e-4;
+      const TrianglePairCcdResult spans = triangle_pair_ccd(request);
+      stats.narrow_pieces += spans.pieces;
+      stats.contact_tests += spans.contact_tests;
+      for (const auto& [mu0, mu1] : spans.intervals) {
+        contact.t0 = t0 + mu0 * (t1 - t0);
+        contact.t1 = t0 + mu1 * (t1 - t0);
+        contact.box = meeting_box(triangle_box_at(a0, a1, mu0, mu1), triangle_box_at(b0, b1, mu0, mu1));
+        found.push_back(contact);
+      }
+      if (!spans.any() && tr.options.conservative) {
+        contact.possible = true;
+        contact.box = meeting_box(triangle_box_at(a0, a1, 0, 1), triangle_box_at(b0, b1, 0, 1));
+        found.push_back(contact);
+      }
+      return;
+    }
+    if (!line.moving[0] && !line.moving[1]) {  // both hold still: one static test decides
+      ++stats.narrow_phase;
+      const MovingTriangle a = tr.corners(item.pair, 0, na.triangle, item.s0);
+      const MovingTriangle b = tr.corners(item.pair, 1, nb.triangle, item.s0);
+      if (geometry::triangles_intersect(a[0], a[1], a[2], b[0], b[1], b[2])) {
+        contact.box = meeting_box(triangle_box_at(a, a, 0, 0), triangle_box_at(b, b, 0, 0));
+        found.push_back(contact);
+      }
+      return;
+    }
+    split_time();
+    return;
+  }
+  // Split the dimension that makes the bounds loose: time when the motion over the range
+  // sweeps further than the nodes are large, else the larger node.
+  const double size_a = 2 * na.half.maxCoeff(), size_b = 2 * nb.half.maxCoeff();
+  const double sweep = std::max(spatial_extent(da) - size_a, spatial_extent(db) - size_b);
+  if (!single_step && sweep > std::min(size_a, size_b)) {
+    split_time();
+  } else if (!na.leaf() && (nb.leaf() || size_a >= size_b)) {
+    next.push_back({item.pair, na.left, item.node_b, item.s0, item.s1});
+    next.push_back({item.pair, na.right, item.node_b, item.s0, item.s1});
+  } else {
+    next.push_back({item.pair, item.node_a, nb.left, item.s0, item.s1});
+    next.push_back({item.pair, item.node_a, nb.right, item.s0, item.s1});
+  }
+}
+
+std::vector<std::pair<double, double>> union_of(std::vector<std::pair<double, double>> ranges) {
+  std::sort(ranges.begin(), ranges.end());
+  std::vector<std::pair<double, double>> merged;
+  for (const auto& r : ranges) {
+    if (!merged.empty() && r.first <= merged.back().second) merged.back().second = std::max(merged.back().second, r.second);
+    else merged.push_back(r);
+  }
+  return merged;
+}
+
+template <DopFamily family>
+bool run_traversal(const Traversal<family>& tr, std::vector<TriangleContact>& contacts, DetectionStats& stats,
+                   const DetectCallbacks& callbacks) {
+  std::vector<WorkItem> level;
+  int max_depth = 1, max_steps = 1;
+  for (int i = 0; i < static_cast<int>(tr.lines.size()); ++i) {
+    const int steps = static_cast<int>(tr.lines[i].times.size()) - 1;
+    level.push_back({i, BodyTree::kRoot, BodyTree::kRoot, 0, steps});
+    max_depth = std::max(max_depth, tr.tree(i, 0).depth() + tr.tree(i, 1).depth());
+    max_steps = std::max(max_steps, steps);
+  }
+  const double expected_levels = max_depth + std::ceil(std::log2(max_steps)) + 1;
+  int depth = 0;
+  while (!level.empty()) {
+    ++depth;
+    tbb::combinable<std::vector<WorkItem>> next_parts;
+    tbb::combinable<std::vector<TriangleContact>> found_parts;
+    tbb::combinable<DetectionStats> stat_parts;
+    const auto run = [&](std::size_t begin, std::size_t end) {
+      auto& next = next_parts.local();
+      auto& found = found_parts.local();
+      auto& st = stat_parts.local();
+      for (std::size_t i = begin; i < end; ++i) process(tr, level[i], next, found, st);
+    };
+    if (level.size() < 512) run(0, level.size());
+    else
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, level.size(), 256),
+                        [&](const tbb::blocked_range<std::size_t>& r) { run(r.begin(), r.end()); });
+    std::vector<WorkItem> next;
+    next_parts.combine_each([&](const std::vector<WorkItem>& part) { next.insert(next.end(), part.begin(), part.end()); });
+    found_parts.combine_each(
+        [&](const std::vector<TriangleContact>& part) { contacts.insert(contacts.end(), part.begin(), part.end()); });
+    stat_parts.combine_each([&](const DetectionStats& s) {
+      stats.bound_tests += s.bound_tests;
+      stats.narrow_phase += s.narrow_phase;
+      stats.narrow_pieces += s.narrow_pieces;
+      stats.contact_tests += s.contact_tests;
+    });
+    stats.levels = depth;
+    if (callbacks.preview) {
+      std::vector<std::pair<double, double>> ranges;
+      for (const WorkItem& item : next) ranges.push_back({tr.lines[item.pair].times[item.s0], tr.lines[item.pair].times[item.s1]});
+      for (const TriangleContact& c : contacts) ranges.push_back({c.t0, c.t1});
+      callbacks.preview({depth, union_of(std::move(ranges))});
+    }
+    if (!report_progress(callbacks.progress, std::min(0.99, depth / expected_levels))) return false;
+    // Breadth-first order is the order of discovery; sort for determinism of memory use only.
+    std::sort(next.begin(), next.end(), [](const WorkItem& x, const WorkItem& y) {
+      return std::tie(x.pair, x.s0, x.node_a, x.node_b, x.s1) < std::tie(y.pair, y.s0, y.node_a, y.node_b, y.s1);
+    });
+    level = std::move(next);
+  }
+  return true;
+}
+
+bool contact_less(const TriangleContact& x, const TriangleContact& y) {
+  return std::tie(x.t0, x.part_a, x.part_b, x.triangle_a, x.triangle_b, x.t1) <
+         std::tie(y.t0, y.part_a, y.part_b, y.triangle_a, y.triangle_b, y.t1);
+}
+
+/// The posed (proxy) vertices of a part at time t.
+Eigen::MatrixX3d proxy_vertices(const scene::Reconfigurable& scene, const PartProxy& proxy, int part, double t) {
+  const Affine m = proxy_map(proxy, t);
+  return (scene.parts[part].mesh.V * m.L.transpose()).rowwise() + m.x.transpose();
+}
+
+/// Whether part `inner` (posed Vi) lies inside part `outer` (posed Vo), their surfaces not crossing.
+bool nested(const scene::Reconfigurable& scene, const BodyTrees& trees, int inner, const Eigen::MatrixX3d& Vi,
+            int outer, const Eigen::MatrixX3d& Vo) {
+  Eigen::AlignedBox3d box_i(Vi.colwise().minCoeff().transpose(), Vi.colwise().maxCoeff().transpose());
+  Eigen::AlignedBox3d box_o(Vo.colwise().minCoeff().transpose(), Vo.colwise().maxCoeff().transpose());
+  if (!box_o.contains(box_i)) return false;
+  const geometry::Mesh posed{Vo, scene.parts[outer].mesh.F};
+  for (int v : trees[inner]->component_vertices())
+    if (!geometry::point_in_solid(posed, Vi.row(v).transpose())) return false;
+  return true;
+}
+
+}  // namespace
+
+BodyTrees build_body_trees(const scene::Reconfigurable& scene) {
+  BodyTrees trees;
+  for (const scene::Part& part : scene.parts) trees.push_back(std::make_shared<const BodyTree>(part.mesh));
+  return trees;
+}
+
+SpacetimeDetector::SpacetimeDetector(int transition, DetectorOptions options)
+    : transition_(transition), options_(options) {}
+
+bool SpacetimeDetector::detect(const scene::Reconfigurable& scene, const BodyTrees& trees,
+                               const DetectCallbacks& callbacks) {
+  valid_ = false;
+  stats_ = {};
+  const int n = static_cast<int>(scene.parts.size());
+  proxies_.assign(n, {});
+  tbb::parallel_for(0, n, [&](int p) {
+    proxies_[p] = build_part_proxy(scene, transition_, p, options_.tolerance, options_.min_step);
+  });
+  contacts_.clear();
+  containments_.clear();
+  std::vector<PairRange> work;
+  for (int a = 0; a < n; ++a)
+    for (int b = a + 1; b < n; ++b) work.push_back({a, b, 0.0, 1.0});
+  if (!traverse(scene, trees, work, callbacks)) return false;
+  valid_ = true;
+  return true;
+}
+
+bool SpacetimeDetector::update(const scene::Reconfigurable& scene, const BodyTrees& trees,
+                               const scene::DirtySet& dirty, const DetectCallbacks& callbacks) {
+  if (!valid_ || dirty.structure_changed || !dirty.geometry_changed.empty() ||
+      proxies_.size() != scene.parts.size())
+    return detect(scene, trees, callbacks);
+  stats_ = {};
+  // Rebuild the dirty stretches of the proxies; collect the changed time range per part.
+  std::map<int, std::vector<std::pair<double, double>>> changed;
+  for (const scene::DirtyRange& range : dirty.ranges) {
+    if (range.transition != transition_) continue;
+    changed[range.part].push_back(rebuild_part_proxy_range(proxies_[range.part], scene, transition_, range.part,
+                                                           options_.tolerance, range.t0, range.t1,
+                                                           options_.min_step));
+  }
+  if (changed.empty()) return true;
+  std::map<std::pair<int, int>, std::vector<std::pair<double, double>>> pair_ranges;
+  const int n = static_cast<int>(scene.parts.size());
+  for (const auto& [part, ranges] : changed)
+    for (const auto& range : ranges)
+      for (int q = 0; q < n; ++q)
+        if (q != part) pair_ranges[{std::min(part, q), std::max(part, q)}].push_back(range);
+  std::vector<PairRange> work;
+  std::set<std::pair<int, int>> pairs;
+  for (auto& [pair, ranges] : pair_ranges) {
+    pairs.insert(pair);
+    for (const auto& [t0, t1] : union_of(ranges)) work.push_back({pair.first, pair.second, t0, t1});
+  }
+  // Drop what the re-traversal will find again: contacts of a re-traversed pair inside its range.
+  std::erase_if(contacts_, [&](const TriangleContact& c) {
+    return std::any_of(work.begin(), work.end(), [&](const PairRange& w) {
+      return w.a == c.part_a && w.b == c.part_b && c.t0 >= w.t0 && c.t1 <= w.t1;
+    });
+  });
+  std::erase_if(containments_, [&](const Containment& c) {
+    return pairs.count({std::min(c.inner, c.outer), std::max(c.inner, c.outer)}) > 0;
+  });
+  return traverse(scene, trees, work, callbacks);
+}
+
+bool SpacetimeDetector::traverse(const scene::Reconfigurable& scene, const BodyTrees& trees,
+                                 const std::vector<PairRange>& work, const DetectCallbacks& callbacks) {
+  std::vector<PairTimeline> lines;
+  for (const PairRange& w : work) lines.push_back(make_timeline(proxies_, w.a, w.b, w.t0, w.t1));
+  for (const PartProxy& proxy : proxies_) stats_.proxy_samples += static_cast<long>(proxy.times.size());
+  std::vector<TriangleContact> found;
+  bool finished = false;
+  const auto run = [&]<DopFamily family>() {
+    const Traversal<family> traversal(scene, trees, proxies_, options_, std::move(lines));
+    finished = run_traversal(traversal, found, stats_, callbacks);
+  };
+  switch (options_.dop) {
+    case DopFamily::k8: run.template operator()<DopFamily::k8>(); break;
+    case DopFamily::k28: run.template operator()<DopFamily::k28>(); break;
+    case DopFamily::k80: run.template operator()<DopFamily::k80>(); break;
+  }
+  if (!finished) {
+    valid_ = false;
+    return false;
+  }
+  contacts_.insert(contacts_.end(), found.begin(), found.end());
+  std::sort(contacts_.begin(), contacts_.end(), contact_less);
+
+  if (options_.detect_containment) {
+    // Nesting can only change when surfaces cross: test once per contact-free stretch.
+    std::set<std::pair<int, int>> pairs;
+    for (const PairRange& w : work) pairs.insert({w.a, w.b});
+    for (const auto& [a, b] : pairs) {
+      std::vector<std::pair<double, double>> touching;
+      for (const TriangleContact& c : contacts_)
+        if (c.part_a == a && c.part_b == b && !c.possible) touching.push_back({c.t0, c.t1});
+      touching = union_of(std::move(touching));
+      std::vector<std::pair<double, double>> free;
+      double start = 0;
+      for (const auto& [t0, t1] : touching) {
+        if (t0 > start) free.push_back({start, t0});
+        start = std::max(start, t1);
+      }
+      if (start < 1) free.push_back({start, 1.0});
+      for (const auto& [t0, t1] : free) {
+        ++stats_.containment_tests;
+        const double t = (t0 + t1) / 2;
+        const Eigen::MatrixX3d Va = proxy_vertices(scene, proxies_[a], a, t);
+        const Eigen::MatrixX3d Vb = proxy_vertices(scene, proxies_[b], b, t);
+        for (const auto& [inner, outer, Vi, Vo] : {std::tuple{a, b, &Va, &Vb}, std::tuple{b, a, &Vb, &Va}}) {
+          if (!nested(scene, trees, inner, *Vi, outer, *Vo)) continue;
+          Containment containment{inner, outer, t0, t1, {}};
+          for (double s : {t0, t1}) {
+            const Eigen::MatrixX3d V = proxy_vertices(scene, proxies_[inner], inner, s);
+            containment.box.extend(Eigen::AlignedBox3d(V.colwise().minCoeff().transpose(), V.colwise().maxCoeff().transpose()));
+          }
+          for (std::size_t k = 0; k < proxies_[inner].times.size(); ++k) {
+            const double s = proxies_[inner].times[k];
+            if (s <= t0 || s >= t1) continue;
+            const Eigen::MatrixX3d V = proxy_vertices(scene, proxies_[inner], inner, s);
+            containment.box.extend(Eigen::AlignedBox3d(V.colwise().minCoeff().transpose(), V.colwise().maxCoeff().transpose()));
+          }
+          containments_.push_back(containment);
+          break;
+        }
+      }
+    }
+    std::sort(containments_.begin(), containments_.end(), [](const Containment& x, const Containment& y) {
+      return std::tie(x.t0, x.inner, x.outer) < std::tie(y.t0, y.inner, y.outer);
+    });
+  }
+  report_progress(callbacks.progress, 1.0);
+  return true;
+}
+
+}  // namespace reconfig::collision

@@ -1,0 +1,232 @@
+#include "reconfig/collision/spacetime_detector.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "reconfig/collision/consolidate.h"
+#include "reconfig/collision/reference_check.h"
+#include "reconfig/scene/edits.h"
+#include "reconfig/scene/history.h"
+#include "support/random_scene.h"
+
+namespace reconfig::collision {
+namespace {
+
+/// Random scenes spread out enough that parts meet now and then rather than all the time.
+scene::Reconfigurable random_scene(std::uint32_t seed) {
+  testing::RandomSceneOptions options;
+  options.spread = 1.5;
+  return testing::random_scene(seed, options);
+}
+
+struct Detected {
+  std::vector<TriangleContact> contacts;
+  std::vector<Containment> containments;
+  std::vector<CollisionInterval> intervals;
+};
+
+Detected detect(const scene::Reconfigurable& scene, DetectorOptions options) {
+  SpacetimeDetector detector(0, options);
+  EXPECT_TRUE(detector.detect(scene, build_body_trees(scene)));
+  return {detector.contacts(), detector.containments(), consolidate(detector.contacts(), detector.containments())};
+}
+
+/// Whether some interval of `intervals` for parts {a, b} covers time t (with slack).
+bool covered(const std::vector<CollisionInterval>& intervals, int a, int b, double t, double slack) {
+  for (const CollisionInterval& ci : intervals)
+    if (std::find(ci.parts.begin(), ci.parts.end(), a) != ci.parts.end() &&
+        std::find(ci.parts.begin(), ci.parts.end(), b) != ci.parts.end() && t >= ci.t0 - slack && t <= ci.t1 + slack)
+      return true;
+  return false;
+}
+
+/// Conservative mode never misses a collision of the true motion: every colliding sample of the
+/// reference check (dense sampling of the exact motion, exact static tests) lies inside an
+/// engine interval.
+TEST(SpacetimeDetector, ConservativeModeMissesNoReferenceCollision) {
+  int colliding_samples = 0;
+  for (std::uint32_t seed = 1; seed <= 12; ++seed) {
+    const scene::Reconfigurable scene = random_scene(seed);
+    DetectorOptions options;
+    options.tolerance = 2e-3;
+    options.conservative = true;
+    const Detected engine = detect(scene, options);
+    ReferenceCheckRequest request;
+    request.samples = 201;
+    const ReferenceCheckResult reference = reference_check(scene, request);
+    for (const SampleContact& c : reference.contacts[0]) {
+      ++colliding_samples;
+      EXPECT_TRUE(covered(engine.intervals, c.part_a, c.part_b, sample_time(c.sample, request.samples), 0))
+          << "seed " << seed << " sample " << c.sample << " parts " << c.part_a << "," << c.part_b;
+    }
+  }
+  EXPECT_GT(colliding_samples, 50);  // the scenes do collide
+}
+
+/// Without inflation the engine tests the proxies (within `tolerance` of the true motion):
+/// a reference collision may be missed only at the very ends of an interval, where the
+/// penetration is shallower than the tolerance.
+TEST(SpacetimeDetector, ExactModeAgreesWithTheReferenceUpToTheProxyTolerance) {
+  for (std::uint32_t seed = 20; seed < 30; ++seed) {
+    const scene::Reconfigurable scene = random_scene(seed);
+    DetectorOptions options;
+    options.tolerance = 2e-4;
+    const Detected engine = detect(scene, options);
+    ReferenceCheckRequest request;
+    request.samples = 201;
+    const ReferenceCheckResult reference = reference_check(scene, request);
+    for (const SampleContact& c : reference.contacts[0])
+      EXPECT_TRUE(covered(engine.intervals, c.part_a, c.part_b, sample_time(c.sample, request.samples), 0.01))
+          << "seed " << seed << " t " << sample_time(c.sample, request.samples);
+    // Every engine interval holds a real collision: the reference sees the same parts collide
+    // in it, or it is shorter than the sampling can see.
+    for (const CollisionInterval& ci : engine.intervals) {
+      if (ci.duration() < 0.02) continue;
+      bool seen = false;
+      for (int i = 0; i <= 20 && !seen; ++i) {
+        const double t = ci.t0 + (ci.t1 - ci.t0) * i / 20.0;
+        for (const SampleContact& c : reference.contacts[0])
+          if (std::abs(sample_time(c.sample, request.samples) - t) <= 0.5 / (request.samples - 1) &&
+              std::find(ci.parts.begin(), ci.parts.end(), c.part_a) != ci.parts.end() &&
+              std::find(ci.parts.begin(), ci.parts.end(), c.part_b) != ci.parts.end())
+            seen = true;
+      }
+      EXPECT_TRUE(seen) << "seed " << seed << " engine interval [" << ci.t0 << ", " << ci.t1 << "]";
+    }
+  }
+}
+
+/// The three axis families bound differently but must find exactly the same contacts.
+TEST(SpacetimeDetector, DopFamiliesFindTheSameContacts) {
+  for (std::uint32_t seed = 40; seed < 44; ++seed) {
+    const scene::Reconfigurable scene = random_scene(seed);
+    std::vector<std::vector<TriangleContact>> results;
+    for (DopFamily family : {DopFamily::k8, DopFamily::k28, DopFamily::k80}) {
+      DetectorOptions options;
+      options.dop = family;
+      results.push_back(detect(scene, options).contacts);
+    }
+    ASSERT_EQ(results[0].size(), results[1].size()) << seed;
+    ASSERT_EQ(results[0].size(), results[2].size()) << seed;
+    for (std::size_t i = 0; i < results[0].size(); ++i)
+      for (int k : {1, 2}) {
+        EXPECT_EQ(results[0][i].triangle_a, results[k][i].triangle_a);
+        EXPECT_EQ(results[0][i].triangle_b, results[k][i].triangle_b);
+        EXPECT_EQ(results[0][i].t0, results[k][i].t0);
+        EXPECT_EQ(results[0][i].t1, results[k][i].t1);
+      }
+  }
+}
+
+bool same_contacts(const std::vector<TriangleContact>& x, const std::vector<TriangleContact>& y) {
+  if (x.size() != y.size()) return false;
+  for (std::size_t i = 0; i < x.size(); ++i)
+    if (x[i].part_a != y[i].part_a || x[i].part_b != y[i].part_b || x[i].triangle_a != y[i].triangle_a ||
+        x[i].triangle_b != y[i].triangle_b || std::abs(x[i].t0 - y[i].t0) > 1e-12 || std::abs(x[i].t1 - y[i].t1) > 1e-12)
+      return false;
+  return true;
+}
+
+/// After edits, the incremental update gives the same intervals as detecting from scratch.
+TEST(SpacetimeDetector, IncrementalUpdateEqualsDetectionFromScratch) {
+  std::mt19937 random(5);
+  for (std::uint32_t seed = 60; seed < 66; ++seed) {
+    scene::Reconfigurable scene = random_scene(seed);
+    const BodyTrees trees = build_body_trees(scene);
+    SpacetimeDetector incremental(0, {});
+    ASSERT_TRUE(incremental.detect(scene, trees));
+    scene::History history;
+    for (int step = 0; step < 4; ++step) {
+      const std::string part = "part" + std::to_string(random() % 3);
+      const double t = 0.1 + 0.8 * (random() % 1000) / 1000.0;
+      scene::DirtySet dirty = history.execute(scene, scene::insert_key("move", part, scene::KeyKind::kTranslation, t));
+      ASSERT_TRUE(incremental.update(scene, trees, dirty));
+      // Move the new key: the part's motion changes around t only.
+      const auto& keys = std::get<scene::KeyframedTrack>(scene.transitions[0].tracks.at(part)).translation;
+      int key = 0;
+      while (keys[key].time != t) ++key;
+      motion::TranslationKey moved = keys[key];
+      const Eigen::Vector3d shift = Eigen::Vector3d::Random() * 0.3;
+      moved.point += shift;
+      moved.in += shift;
+      moved.out += shift;
+      dirty = history.execute(scene, scene::set_translation_key("move", part, key, moved));
+      ASSERT_TRUE(incremental.update(scene, trees, dirty));
+
+      SpacetimeDetector fresh(0, {});
+      ASSERT_TRUE(fresh.detect(scene, trees));
+      // The proxies differ where the incremental one kept old samples, so compare the
+      // consolidated picture, which depends on the motion, not on the sampling.
+      const auto a = consolidate(incremental.contacts(), incremental.containments());
+      const auto b = consolidate(fresh.contacts(), fresh.containments());
+      ASSERT_EQ(a.size(), b.size()) << "seed " << seed << " step " << step;
+      for (std::size_t i = 0; i < a.size(); ++i) {
+        EXPECT_EQ(a[i].parts, b[i].parts);
+        EXPECT_NEAR(a[i].t0, b[i].t0, 0.01) << "seed " << seed;
+        EXPECT_NEAR(a[i].t1, b[i].t1, 0.01) << "seed " << seed;
+      }
+      // And undoing brings back exactly the original proxies' answer for that range.
+      if (step == 3) {
+        while (history.can_undo()) ASSERT_TRUE(incremental.update(scene, trees, history.undo(scene)));
+        SpacetimeDetector original(0, {});
+        ASSERT_TRUE(original.detect(scene, trees));
+        EXPECT_EQ(consolidate(incremental.contacts(), {}).size(), consolidate(original.contacts(), {}).size());
+      }
+    }
+  }
+}
+
+TEST(SpacetimeDetector, ProxiesStayWithinTolerance) {
+  const scene::Reconfigurable scene = random_scene(3);
+  for (double tolerance : {1e-2, 1e-3, 1e-4}) {
+    for (int p = 0; p < 3; ++p) {
+      const PartProxy proxy = build_part_proxy(scene, 0, p, tolerance);
+      EXPECT_LE(proxy.deviation, tolerance);
+
+      // Densely compare the proxy's vertex paths with the true motion.
+      const auto& V = scene.parts[p].mesh.V;
+      double worst = 0;
+      for (int i = 0; i <= 2000; ++i) {
+        const double t = i / 2000.0;
+        const int k = proxy.step_of(t);
+        const double s = (t - proxy.times[k]) / (proxy.times[k + 1] - proxy.times[k]);
+        const Eigen::Isometry3d truth = scene.pose_at(0, p, t).to_isometry(scene.parts[p].center);
+        for (int v = 0; v < V.rows(); v += 7) {
+          const Eigen::Vector3d rest = V.row(v);
+          const Eigen::Vector3d linear = (1 - s) * (proxy.poses[k] * rest) + s * (proxy.poses[k + 1] * rest);
+          worst = std::max(worst, (linear - truth * rest).norm());
+        }
+      }
+      EXPECT_LE(worst, tolerance * (1 + 1e-9)) << "part " << p;
+      EXPECT_GT(worst, tolerance / 50) << "steps are not absurdly small";
+    }
+  }
+}
+
+TEST(SpacetimeDetector, PreviewsNarrowDownToTheContacts) {
+  const scene::Reconfigurable scene = random_scene(7);
+  SpacetimeDetector detector(0, {});
+  std::vector<TraversalPreview> previews;
+  DetectCallbacks callbacks;
+  callbacks.preview = [&](const TraversalPreview& p) { previews.push_back(p); };
+  ASSERT_TRUE(detector.detect(scene, build_body_trees(scene), callbacks));
+  ASSERT_GT(previews.size(), 3u);
+  const auto total = [](const TraversalPreview& p) {
+    double sum = 0;
+    for (const auto& [a, b] : p.ranges) sum += b - a;
+    return sum;
+  };
+  // Every contact lies in every preview (previews are conservative) ...
+  for (const TraversalPreview& preview : previews)
+    for (const TriangleContact& c : detector.contacts()) {
+      bool inside = false;
+      for (const auto& [a, b] : preview.ranges) inside = inside || (c.t0 >= a - 1e-12 && c.t1 <= b + 1e-12);
+      EXPECT_TRUE(inside) << "level " << preview.level;
+    }
+  // ... and they shrink as the traversal goes deeper.
+  EXPECT_LE(total(previews.back()), total(previews.front()));
+}
+
+}  // namespace
+}  // namespace reconfig::collision
