@@ -4,7 +4,6 @@
 #include <tbb/global_control.h>
 
 #include <chrono>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <optional>
 
@@ -13,6 +12,7 @@
 #include "reconfig/collision/detect_collisions.h"
 #include "reconfig/collision/reference_check.h"
 #include "reconfig/common/input_error.h"
+#include "reconfig/common/write_atomically.h"
 #include "reconfig/scene/scene_file.h"
 
 namespace reconfig::cli {
@@ -128,9 +128,7 @@ std::string markdown_report(const scene::Reconfigurable& scene, const CheckOutco
 }
 
 void write_file(const std::string& path, const std::string& text) {
-  std::ofstream out(path, std::ios::trunc);
-  out << text;
-  if (!out) throw InputError(path, "", "could not write the file");
+  write_atomically(path, [&](std::ostream& out) { out << text; });
 }
 
 collision::DopFamily dop_family(int dop) {

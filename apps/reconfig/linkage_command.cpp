@@ -12,6 +12,7 @@
 
 #include "command.h"
 #include "reconfig/common/input_error.h"
+#include "reconfig/common/write_atomically.h"
 #include "reconfig/linkage/linkage_edit.h"
 #include "reconfig/linkage/linkage_file.h"
 #include "reconfig/linkage/linkage_svg.h"
@@ -203,8 +204,7 @@ int run_plot(const PlotOptions& options) {
   } catch (const InputError& error) {
     throw error.in_file(options.file);
   }
-  std::ofstream out(options.output);
-  if (!(out << text)) throw InputError(options.output, "", "cannot write the file");
+  write_atomically(options.output, [&](std::ostream& out) { out << text; });
   fmt::print("wrote {}\n", options.output);
   return kExitOk;
 }

@@ -13,35 +13,12 @@
 #include <string>
 
 #include "reconfig/common/input_error.h"
+#include "reconfig/common/write_atomically.h"
 
 namespace reconfig::geometry {
 namespace {
 
 namespace fs = std::filesystem;
-
-/// Writes through `write` into `<path>.tmp`, then renames it to `path`.
-void write_atomically(const fs::path& path, const std::function<void(std::ofstream&)>& write) {
-  fs::path temp = path;
-  temp += ".tmp";
-  {
-    std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-    if (!out) throw InputError(path.string(), "", std::string("cannot open for writing: ") + std::strerror(errno));
-    write(out);
-    out.flush();
-    if (!out) {
-      std::error_code ignored;
-      fs::remove(temp, ignored);
-      throw InputError(path.string(), "", "write failed");
-    }
-  }
-  std::error_code error;
-  fs::rename(temp, path, error);
-  if (error) {
-    std::error_code ignored;
-    fs::remove(temp, ignored);
-    throw InputError(path.string(), "", "cannot replace the file: " + error.message());
-  }
-}
 
 /// Refuses to write what `load_mesh` would refuse to read.
 void check_writable(const fs::path& path, const Mesh& mesh) {
@@ -61,7 +38,7 @@ Eigen::Vector3d unit_normal(const Mesh& mesh, int f) {
   return length > 0 && std::isfinite(length) ? Eigen::Vector3d(n / length) : Eigen::Vector3d::Zero();
 }
 
-void put_float(std::ofstream& out, double value) {
+void put_float(std::ostream& out, double value) {
   const float f = static_cast<float>(value);
   std::array<unsigned char, 4> bytes;
   std::uint32_t bits;
@@ -86,7 +63,7 @@ std::string format_float(double value) {
 
 void save_obj(const fs::path& path, const Mesh& mesh) {
   check_writable(path, mesh);
-  write_atomically(path, [&](std::ofstream& out) {
+  write_atomically(path, [&](std::ostream& out) {
     out << "# " << mesh.vertex_count() << " vertices, " << mesh.face_count() << " triangles\n";
     for (int v = 0; v < mesh.vertex_count(); ++v)
       out << "v " << format_double(mesh.V(v, 0)) << ' ' << format_double(mesh.V(v, 1)) << ' '
@@ -98,7 +75,7 @@ void save_obj(const fs::path& path, const Mesh& mesh) {
 
 void save_stl(const fs::path& path, const Mesh& mesh, bool binary) {
   check_writable(path, mesh);
-  write_atomically(path, [&](std::ofstream& out) {
+  write_atomically(path, [&](std::ostream& out) {
     if (binary) {
       std::array<char, 80> header{};
       const char title[] = "binary STL written by reconfig";

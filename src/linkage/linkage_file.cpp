@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "reconfig/common/input_error.h"
+#include "reconfig/common/write_atomically.h"
 #include "reconfig/linkage/joint_order.h"
 #include "reconfig/linkage/motion_range.h"
 #include "reconfig/linkage/symbolic_kinematics.h"
@@ -221,10 +222,8 @@ std::string linkage_to_json(const Linkage& linkage) {
 }
 
 void write_linkage(const Linkage& linkage, const std::filesystem::path& path) {
-  std::ofstream out(path);
-  if (!out) throw InputError(path.string(), "", "cannot write the file");
-  out << linkage_to_json(linkage) << "\n";
-  if (!out) throw InputError(path.string(), "", "cannot write the file");
+  const std::string text = linkage_to_json(linkage) + "\n";
+  write_atomically(path, [&](std::ostream& out) { out << text; });
 }
 
 }  // namespace reconfig::linkage

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "reconfig/common/input_error.h"
+#include "reconfig/common/write_atomically.h"
 #include "reconfig/geometry/load_mesh.h"
 #include "reconfig/geometry/mesh_check.h"
 #include "reconfig/geometry/save_mesh.h"
@@ -253,21 +254,6 @@ ordered_json track_json(const Track& track) {
   return j;
 }
 
-void write_atomically(const fs::path& file, const std::string& text) {
-  const fs::path temporary = file.string() + ".tmp";
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    out << text;
-    out.flush();
-    if (!out) throw InputError(file.string(), "", "could not write the file");
-  }
-  std::error_code error;
-  fs::rename(temporary, file, error);
-  if (error) {
-    fs::remove(temporary, error);
-    throw InputError(file.string(), "", "could not replace the file: " + error.message());
-  }
-}
 
 }  // namespace
 
@@ -335,7 +321,8 @@ void save_scene(Reconfigurable& scene, const fs::path& file) {
     geometry::save_obj(mesh_file, part.mesh);
     part.source = MeshFile{mesh_file};
   }
-  write_atomically(file, scene_to_json(scene, base_dir));
+  const std::string text = scene_to_json(scene, base_dir);
+  write_atomically(file, [&](std::ostream& out) { out << text; });
 }
 
 }  // namespace reconfig::scene

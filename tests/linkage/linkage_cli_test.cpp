@@ -1,33 +1,21 @@
-// The `reconfig linkage` commands, run as a user would (skipped until the tool is built).
+// The `reconfig linkage` commands, run as a user would.
 
 #include <gtest/gtest.h>
 
-#include <array>
-#include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
-#include <sys/wait.h>
 
 #include "linkage_test_util.h"
+#include "support/run_command.h"
 #include "support/test_data.h"
 
 namespace reconfig::linkage {
 namespace {
 
-struct ToolRun {
-  int exit_code = -1;
-  std::string out;  // stdout and stderr
-};
-
-ToolRun run(const std::string& arguments) {
-  const auto tool = testing::binary_dir() / "bin" / "reconfig";
-  const std::string command = tool.string() + " " + arguments + " 2>&1";
-  ToolRun result;
-  FILE* pipe = popen(command.c_str(), "r");
-  std::array<char, 4096> buffer{};
-  while (std::fgets(buffer.data(), buffer.size(), pipe)) result.out += buffer.data();
-  const int status = pclose(pipe);
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+/// Runs the tool; these tests look for messages on either stream.
+testing::CommandResult run(const std::string& arguments) {
+  testing::CommandResult result = testing::run_reconfig(arguments);
+  result.out += result.err;
   return result;
 }
 
@@ -35,15 +23,10 @@ std::string example_path(const std::string& name) {
   return (testing::source_dir() / "examples" / "linkages" / name).string();
 }
 
-class LinkageCli : public ::testing::Test {
- protected:
-  void SetUp() override {
-    if (!std::filesystem::exists(testing::binary_dir() / "bin" / "reconfig")) GTEST_SKIP() << "reconfig not built";
-  }
-};
+class LinkageCli : public ::testing::Test {};
 
 TEST_F(LinkageCli, SimulatePrintsTheJsonContract) {
-  const ToolRun r = run("linkage simulate " + example_path("jansen.json") + " --angles 0,90,450 --json");
+  const testing::CommandResult r = run("linkage simulate " + example_path("jansen.json") + " --angles 0,90,450 --json");
   ASSERT_EQ(r.exit_code, 0) << r.out;
   const auto doc = nlohmann::json::parse(r.out);
   EXPECT_EQ(doc["angles"], nlohmann::json({0, 90, 450}));
@@ -54,7 +37,7 @@ TEST_F(LinkageCli, SimulatePrintsTheJsonContract) {
 }
 
 TEST_F(LinkageCli, SimulateFailsCleanlyPastADeadPointAndOnBadInput) {
-  ToolRun r = run("linkage simulate " + example_path("peaucellier_lipkin.json") + " --angles 10,120");
+  testing::CommandResult r = run("linkage simulate " + example_path("peaucellier_lipkin.json") + " --angles 10,120");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.out.find("hits a singularity at 82.819° before reaching 120°"), std::string::npos) << r.out;
   const auto dir = testing::fresh_temp_dir();
@@ -69,7 +52,7 @@ TEST_F(LinkageCli, SimulateFailsCleanlyPastADeadPointAndOnBadInput) {
 TEST_F(LinkageCli, EditAndPlotWriteFiles) {
   const auto dir = testing::fresh_temp_dir();
   const std::string out = (dir / "edited.json").string();
-  ToolRun r = run("linkage edit " + example_path("jansen.json") + " --drag U -30 35 --keep-trajectory foot -o " + out);
+  testing::CommandResult r = run("linkage edit " + example_path("jansen.json") + " --drag U -30 35 --keep-trajectory foot -o " + out);
   ASSERT_EQ(r.exit_code, 0) << r.out;
   EXPECT_NE(r.out.find("motion: full rotation"), std::string::npos) << r.out;
   const Linkage edited = read_linkage(out);
@@ -92,7 +75,7 @@ TEST_F(LinkageCli, EditAndPlotWriteFiles) {
   EXPECT_NE(r.out.find("hits a singularity"), std::string::npos) << r.out;
   r = run("linkage plot " + example_path("klann.json") + " -o " + (dir / "missing-dir" / "k.svg").string());
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.out.find("cannot write"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("cannot open for writing"), std::string::npos) << r.out;
   r = run("linkage plot " + example_path("klann.json") + " -o " + (dir / "k.svg").string());
   ASSERT_EQ(r.exit_code, 0) << r.out;
   EXPECT_TRUE(std::filesystem::file_size(dir / "k.svg") > 1000);
