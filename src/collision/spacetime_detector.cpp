@@ -193,7 +193,7 @@ void process(const Traversal<family>& tr, const WorkItem& item, std::vector<Work
   };
   if (na.leaf() && nb.leaf()) {
     const double t0 = line.times[item.s0], t1 = line.times[item.s1];
-    TriangleContact contact{line.a, na.triangle, line.b, nb.triangle, t0, t1, {}, false};
+    TriangleContact contact{line.a, na.triangle, line.b, nb.triangle, t0, t1, {}, false, t0, t1};
     if (single_step) {
       ++stats.narrow_phase;
       const MovingTriangle a0 = tr.corners(item.pair, 0, na.triangle, item.s0);
@@ -375,13 +375,16 @@ bool SpacetimeDetector::update(const scene::Reconfigurable& scene, const BodyTre
       proxies_.size() != scene.parts.size())
     return detect(scene, trees, callbacks);
   stats_ = {};
-  // Rebuild the dirty stretches of the proxies; collect the changed time range per part.
+  // Rebuild the proxies of the dirty parts (a proxy is a function of the motion alone, so the
+  // result equals a detection from scratch) and find where they changed.
+  std::set<int> dirty_parts;
+  for (const scene::DirtyRange& range : dirty.ranges)
+    if (range.transition == transition_) dirty_parts.insert(range.part);
   std::map<int, std::vector<std::pair<double, double>>> changed;
-  for (const scene::DirtyRange& range : dirty.ranges) {
-    if (range.transition != transition_) continue;
-    changed[range.part].push_back(rebuild_part_proxy_range(proxies_[range.part], scene, transition_, range.part,
-                                                           options_.tolerance, range.t0, range.t1,
-                                                           options_.min_step));
+  for (int part : dirty_parts) {
+    PartProxy fresh = build_part_proxy(scene, transition_, part, options_.tolerance, options_.min_step);
+    if (const auto range = changed_range(proxies_[part], fresh)) changed[part].push_back(*range);
+    proxies_[part] = std::move(fresh);
   }
   if (changed.empty()) return true;
   std::map<std::pair<int, int>, std::vector<std::pair<double, double>>> pair_ranges;
@@ -396,10 +399,10 @@ bool SpacetimeDetector::update(const scene::Reconfigurable& scene, const BodyTre
     pairs.insert(pair);
     for (const auto& [t0, t1] : union_of(ranges)) work.push_back({pair.first, pair.second, t0, t1});
   }
-  // Drop what the re-traversal will find again: contacts of a re-traversed pair inside its range.
+  // Drop what the re-traversal will find again: contacts found in a re-traversed step.
   std::erase_if(contacts_, [&](const TriangleContact& c) {
     return std::any_of(work.begin(), work.end(), [&](const PairRange& w) {
-      return w.a == c.part_a && w.b == c.part_b && c.t0 >= w.t0 && c.t1 <= w.t1;
+      return w.a == c.part_a && w.b == c.part_b && c.step_t0 >= w.t0 && c.step_t1 <= w.t1;
     });
   });
   std::erase_if(containments_, [&](const Containment& c) {

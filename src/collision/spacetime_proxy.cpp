@@ -82,26 +82,19 @@ PartProxy build_part_proxy(const scene::Reconfigurable& scene, int transition, i
   return proxy;
 }
 
-std::pair<double, double> rebuild_part_proxy_range(PartProxy& proxy, const scene::Reconfigurable& scene, int transition,
-                                                   int part, double tolerance, double t0, double t1, double min_step) {
-  const int first = proxy.step_of(t0);
-  const int last = proxy.step_of(t1) + 1;
-  const double a = proxy.times[first], b = proxy.times[last];
-  PartProxy middle;
-  const double reached =
-      sample_range(middle, deviation_bound(scene, transition, part), scene, transition, part, tolerance, a, b, min_step);
-  PartProxy rebuilt;
-  rebuilt.times.assign(proxy.times.begin(), proxy.times.begin() + first);
-  rebuilt.poses.assign(proxy.poses.begin(), proxy.poses.begin() + first);
-  rebuilt.times.insert(rebuilt.times.end(), middle.times.begin(), middle.times.end());
-  rebuilt.poses.insert(rebuilt.poses.end(), middle.poses.begin(), middle.poses.end());
-  rebuilt.times.insert(rebuilt.times.end(), proxy.times.begin() + last + 1, proxy.times.end());
-  rebuilt.poses.insert(rebuilt.poses.end(), proxy.poses.begin() + last + 1, proxy.poses.end());
-  // The kept stretches' deviation is unknown here without re-bounding them; keep the larger.
-  rebuilt.deviation = std::max(proxy.deviation, reached);
-  update_moving(rebuilt);
-  proxy = std::move(rebuilt);
-  return {a, b};
+std::optional<std::pair<double, double>> changed_range(const PartProxy& before, const PartProxy& after) {
+  const auto same = [&](std::size_t i, std::size_t j) {
+    return before.times[i] == after.times[j] && before.poses[i].matrix() == after.poses[j].matrix();
+  };
+  const std::size_t n = before.times.size(), m = after.times.size();
+  std::size_t prefix = 0;
+  while (prefix < n && prefix < m && same(prefix, prefix)) ++prefix;
+  if (prefix == n && n == m) return std::nullopt;
+  std::size_t suffix = 0;
+  while (suffix < n - prefix && suffix < m - prefix && same(n - 1 - suffix, m - 1 - suffix)) ++suffix;
+  const double a = prefix > 0 ? after.times[prefix - 1] : 0.0;
+  const double b = suffix > 0 ? after.times[m - suffix] : 1.0;
+  return std::pair{a, b};
 }
 
 }  // namespace reconfig::collision

@@ -70,10 +70,11 @@ class SpacetimeDetector {
   /// @return false if cancelled (the detector then holds no valid result)
   bool detect(const scene::Reconfigurable& scene, const BodyTrees& trees, const DetectCallbacks& callbacks = {});
 
-  /// Brings the result up to date after edits: rebuilds the proxies of the dirty parts over
-  /// the dirty ranges of this transition, drops the contacts and containments those ranges
-  /// invalidate and re-traverses only the pairs involving a dirty part over the changed time.
-  /// Parts whose geometry changed (or a structural change) trigger a full `detect`.
+  /// Brings the result up to date after edits: rebuilds the proxies of the parts the dirty set
+  /// names for this transition, finds the time range where each proxy changed, drops the
+  /// contacts found in those stretches and re-traverses only the pairs involving a changed
+  /// part over them. The result is the same as `detect` from scratch. Parts whose geometry
+  /// changed (or a structural change) trigger a full `detect`.
   /// @return false if cancelled (call `detect` before trusting the result again)
   bool update(const scene::Reconfigurable& scene, const BodyTrees& trees, const scene::DirtySet& dirty,
               const DetectCallbacks& callbacks = {});

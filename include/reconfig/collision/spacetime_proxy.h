@@ -5,6 +5,8 @@
 /// motion (reconfigurables §3, with adaptive instead of fixed Δt).
 
 #include <Eigen/Geometry>
+#include <optional>
+#include <utility>
 #include <vector>
 
 #include "reconfig/scene/reconfigurable.h"
@@ -33,12 +35,9 @@ struct PartProxy {
 PartProxy build_part_proxy(const scene::Reconfigurable& scene, int transition, int part, double tolerance,
                            double min_step = 1e-5);
 
-/// Replaces the samples of `proxy` over [t0, t1], widened to the samples around it, with fresh
-/// samples of the current motion (used after an edit dirtied that range). Samples outside
-/// are kept, so the unchanged stretches of the motion keep exactly the same proxy.
-/// @return the time range whose proxy changed (the widened range)
-std::pair<double, double> rebuild_part_proxy_range(PartProxy& proxy, const scene::Reconfigurable& scene,
-                                                   int transition, int part, double tolerance, double t0,
-                                                   double t1, double min_step = 1e-5);
+/// The time range over which two proxies of the same part differ: from the last sample of
+/// their common beginning to the first sample of their common end (both are samples of
+/// both). Empty if they are identical.
+std::optional<std::pair<double, double>> changed_range(const PartProxy& before, const PartProxy& after);
 
 }  // namespace reconfig::collision

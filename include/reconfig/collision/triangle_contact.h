@@ -19,6 +19,8 @@ struct TriangleContact {
   /// Conservative mode only: the proxies do not intersect here, but the true motion (within
   /// the proxy tolerance of them) may.
   bool possible = false;
+  /// The proxy time step (of the pair's merged samples) in which the narrow phase found it.
+  double step_t0 = 0, step_t1 = 0;
 };
 
 /// Part `inner` lies entirely inside part `outer` (no surface crossing) during [t0, t1].
