@@ -194,6 +194,20 @@ void process(const Traversal<family>& tr, const WorkItem& item, std::vector<Work
   if (na.leaf() && nb.leaf()) {
     const double t0 = line.times[item.s0], t1 = line.times[item.s1];
     TriangleContact contact{line.a, na.triangle, line.b, nb.triangle, t0, t1, {}, false, t0, t1};
+    // Reports the contact over step parameters [mu0, mu1] in pieces no longer than allowed.
+    const auto emit = [&](const MovingTriangle& a0, const MovingTriangle& a1, const MovingTriangle& b0,
+                          const MovingTriangle& b1, double mu0, double mu1) {
+      const double duration = (mu1 - mu0) * (t1 - t0);
+      const int pieces = std::max(1, static_cast<int>(std::ceil(duration / tr.options.max_contact_duration - 1e-9)));
+      for (int k = 0; k < pieces; ++k) {
+        const double lo = mu0 + (mu1 - mu0) * k / pieces;
+        const double hi = k + 1 == pieces ? mu1 : mu0 + (mu1 - mu0) * (k + 1) / pieces;
+        contact.t0 = k == 0 ? t0 + mu0 * (t1 - t0) : t0 + lo * (t1 - t0);
+        contact.t1 = k + 1 == pieces ? t0 + mu1 * (t1 - t0) : t0 + hi * (t1 - t0);
+        contact.box = meeting_box(triangle_box_at(a0, a1, lo, hi), triangle_box_at(b0, b1, lo, hi));
+        found.push_back(contact);
+      }
+    };
     if (single_step) {
       ++stats.narrow_phase;
       const MovingTriangle a0 = tr.corners(item.pair, 0, na.triangle, item.s0);
@@ -210,16 +224,10 @@ void process(const Traversal<family>& tr, const WorkItem& item, std::vector<Work
       const TrianglePairCcdResult spans = triangle_pair_ccd(request);
       stats.narrow_pieces += spans.pieces;
       stats.contact_tests += spans.contact_tests;
-      for (const auto& [mu0, mu1] : spans.intervals) {
-        contact.t0 = t0 + mu0 * (t1 - t0);
-        contact.t1 = t0 + mu1 * (t1 - t0);
-        contact.box = meeting_box(triangle_box_at(a0, a1, mu0, mu1), triangle_box_at(b0, b1, mu0, mu1));
-        found.push_back(contact);
-      }
+      for (const auto& [mu0, mu1] : spans.intervals) emit(a0, a1, b0, b1, mu0, mu1);
       if (!spans.any() && tr.options.conservative) {
         contact.possible = true;
-        contact.box = meeting_box(triangle_box_at(a0, a1, 0, 1), triangle_box_at(b0, b1, 0, 1));
-        found.push_back(contact);
+        emit(a0, a1, b0, b1, 0, 1);
       }
       return;
     }
@@ -227,10 +235,7 @@ void process(const Traversal<family>& tr, const WorkItem& item, std::vector<Work
       ++stats.narrow_phase;
       const MovingTriangle a = tr.corners(item.pair, 0, na.triangle, item.s0);
       const MovingTriangle b = tr.corners(item.pair, 1, nb.triangle, item.s0);
-      if (geometry::triangles_intersect(a[0], a[1], a[2], b[0], b[1], b[2])) {
-        contact.box = meeting_box(triangle_box_at(a, a, 0, 0), triangle_box_at(b, b, 0, 0));
-        found.push_back(contact);
-      }
+      if (geometry::triangles_intersect(a[0], a[1], a[2], b[0], b[1], b[2])) emit(a, a, b, b, 0, 1);
       return;
     }
     split_time();

@@ -30,6 +30,9 @@ struct DetectorOptions {
   /// Also report parts nested inside others without surface contact.
   bool detect_containment = true;
   double min_step = 1e-5;  ///< smallest proxy time step
+  /// Contacts longer than this are reported in pieces, each with its own (tighter) box, so
+  /// that consolidation per frame can keep the 3D view's boxes tight.
+  double max_contact_duration = 0.01;
 };
 
 /// The coarse picture after one level of the breadth-first traversal: every time where a

@@ -1,0 +1,127 @@
+#include "reconfig/collision/collision_service.h"
+
+#include "reconfig/collision/consolidate.h"
+
+namespace reconfig::collision {
+
+CollisionService::CollisionService(CollisionServiceOptions options)
+    : options_(options), snapshot_(std::make_shared<CollisionSnapshot>()) {
+  worker_ = std::thread([this] { run(); });
+}
+
+CollisionService::~CollisionService() {
+  {
+    std::lock_guard lock(mutex_);
+    stopping_ = true;
+  }
+  changed_.notify_all();
+  worker_.join();
+}
+
+std::uint64_t CollisionService::submit(std::shared_ptr<const scene::Reconfigurable> scene,
+                                       const scene::DirtySet& dirty) {
+  std::lock_guard lock(mutex_);
+  pending_scene_ = std::move(scene);
+  pending_dirty_.merge(dirty);
+  ++submitted_;
+  changed_.notify_all();
+  return submitted_;
+}
+
+std::shared_ptr<const CollisionSnapshot> CollisionService::snapshot() const {
+  std::lock_guard lock(mutex_);
+  return snapshot_;
+}
+
+bool CollisionService::wait_until_complete(std::chrono::milliseconds timeout) const {
+  std::unique_lock lock(mutex_);
+  return changed_.wait_for(lock, timeout, [&] { return snapshot_->complete && snapshot_->version == submitted_; });
+}
+
+void CollisionService::publish(std::shared_ptr<const CollisionSnapshot> next) {
+  {
+    std::lock_guard lock(mutex_);
+    snapshot_ = std::move(next);
+  }
+  changed_.notify_all();
+}
+
+void CollisionService::run() {
+  std::vector<SpacetimeDetector> detectors;
+  BodyTrees trees;
+  std::vector<TransitionSnapshot> last_done;  // per transition: the last up-to-date result
+  for (;;) {
+    std::shared_ptr<const scene::Reconfigurable> scene;
+    scene::DirtySet dirty;
+    std::uint64_t version = 0;
+    {
+      std::unique_lock lock(mutex_);
+      changed_.wait(lock, [&] { return stopping_ || pending_scene_ != nullptr; });
+      if (stopping_) return;
+      scene = std::move(pending_scene_);
+      pending_scene_ = nullptr;
+      dirty = std::move(pending_dirty_);
+      pending_dirty_ = {};
+      version = submitted_;
+    }
+    // A newer submission cancels this round; its dirty set is merged with ours below.
+    const auto superseded = [&] {
+      std::lock_guard lock(mutex_);
+      return stopping_ || pending_scene_ != nullptr;
+    };
+    const int n = static_cast<int>(scene->transitions.size());
+    const bool rebuild = dirty.structure_changed || static_cast<int>(detectors.size()) != n ||
+                         trees.size() != scene->parts.size();
+    if (rebuild) {
+      trees = build_body_trees(*scene);
+      detectors.clear();
+      for (int t = 0; t < n; ++t) detectors.emplace_back(t, options_.detector);
+      last_done.assign(n, {});
+    } else {
+      for (int part : dirty.geometry_changed) trees[part] = std::make_shared<const BodyTree>(scene->parts[part].mesh);
+    }
+    auto current = std::make_shared<CollisionSnapshot>(*snapshot());
+    current->version = version;
+    current->complete = false;
+    current->transitions.resize(n);
+    for (int t = 0; t < n; ++t) current->transitions[t].up_to_date = false;
+    bool cancelled = false;
+    for (int t = 0; t < n && !cancelled; ++t) {
+      DetectCallbacks callbacks;
+      callbacks.progress = [&](double) { return !superseded(); };
+      callbacks.preview = [&](const TraversalPreview& preview) {
+        auto next = std::make_shared<CollisionSnapshot>(*current);
+        next->transitions[t].preview = preview.ranges;
+        publish(next);
+      };
+      const bool done = rebuild ? detectors[t].detect(*scene, trees, callbacks)
+                                : detectors[t].update(*scene, trees, dirty, callbacks);
+      if (!done) {
+        cancelled = true;
+        break;
+      }
+      TransitionSnapshot result;
+      result.transition = t;
+      result.name = scene->transitions[t].name;
+      result.intervals = consolidate(detectors[t].contacts(), detectors[t].containments());
+      result.frames = consolidate(detectors[t].contacts(), detectors[t].containments(), options_.frame);
+      result.up_to_date = true;
+      result.changes = diff_intervals(last_done[t].intervals, result.intervals);
+      last_done[t] = result;
+      current->transitions[t] = std::move(result);
+      current->stats = detectors[t].last_stats();
+      publish(std::make_shared<CollisionSnapshot>(*current));
+    }
+    if (cancelled) {
+      // Detectors that did not finish are invalid and will detect from scratch; keep the
+      // dirty set for the ones that did not run yet.
+      std::lock_guard lock(mutex_);
+      pending_dirty_.merge(dirty);
+      continue;
+    }
+    current->complete = true;
+    publish(current);
+  }
+}
+
+}  // namespace reconfig::collision

@@ -1,0 +1,102 @@
+#include "reconfig/collision/collision_service.h"
+
+#include <gtest/gtest.h>
+
+#include "reconfig/collision/consolidate.h"
+#include "reconfig/scene/edits.h"
+#include "reconfig/scene/history.h"
+#include "reconfig/scene/scene_file.h"
+#include "support/test_data.h"
+
+namespace reconfig::collision {
+namespace {
+
+using namespace std::chrono_literals;
+
+scene::Reconfigurable bench_table() {
+  return scene::load_scene(testing::source_dir() / "examples" / "bench-table" / "scene.json");
+}
+
+scene::DirtySet everything() {
+  scene::DirtySet dirty;
+  dirty.structure_changed = true;
+  return dirty;
+}
+
+/// Lifts the backrest's path in "unfold" (as the collision-free "unfold_lifted" does).
+std::unique_ptr<scene::Command> lift_backrest() {
+  return scene::set_translation_key("unfold", "backrest", 1, {0.5, {0, 0.1, 0.45}, {0, 0.05, 0.45}, {0, 0.15, 0.45}});
+}
+
+TEST(CollisionService, PublishesTheIntervalsOfEveryTransition) {
+  CollisionService service;
+  EXPECT_EQ(service.snapshot()->version, 0u);
+  const std::uint64_t version = service.submit(std::make_shared<scene::Reconfigurable>(bench_table()), everything());
+  ASSERT_TRUE(service.wait_until_complete(60s));
+  const auto snapshot = service.snapshot();
+  EXPECT_EQ(snapshot->version, version);
+  ASSERT_EQ(snapshot->transitions.size(), 2u);
+  EXPECT_EQ(snapshot->transitions[0].name, "unfold");
+  EXPECT_EQ(snapshot->transitions[0].intervals.size(), 2u);  // backrest × each armrest
+  EXPECT_GE(snapshot->transitions[0].frames.size(), snapshot->transitions[0].intervals.size());
+  for (const CollisionInterval& frame : snapshot->transitions[0].frames) EXPECT_LE(frame.duration(), 0.01 + 1e-12);
+  EXPECT_TRUE(snapshot->transitions[1].intervals.empty());
+  for (const IntervalDiffEntry& change : snapshot->transitions[0].changes) EXPECT_EQ(change.change, IntervalChange::kAppeared);
+}
+
+TEST(CollisionService, AnEditMakesTheCollisionDisappearAndUndoBringsItBack) {
+  CollisionService service;
+  scene::Reconfigurable scene = bench_table();
+  service.submit(std::make_shared<scene::Reconfigurable>(scene), everything());
+  ASSERT_TRUE(service.wait_until_complete(60s));
+
+  scene::History history;
+  history.execute(scene, scene::insert_key("unfold", "backrest", scene::KeyKind::kTranslation, 0.5));
+  service.submit(std::make_shared<scene::Reconfigurable>(scene), {});  // inserting keeps the motion
+  scene::DirtySet dirty = history.execute(scene, lift_backrest());
+  service.submit(std::make_shared<scene::Reconfigurable>(scene), dirty);
+  ASSERT_TRUE(service.wait_until_complete(60s));
+  auto snapshot = service.snapshot();
+  EXPECT_TRUE(snapshot->transitions[0].intervals.empty());
+  ASSERT_EQ(snapshot->transitions[0].changes.size(), 2u);
+  for (const IntervalDiffEntry& change : snapshot->transitions[0].changes)
+    EXPECT_EQ(change.change, IntervalChange::kDisappeared);
+
+  dirty = history.undo(scene);
+  service.submit(std::make_shared<scene::Reconfigurable>(scene), dirty);
+  ASSERT_TRUE(service.wait_until_complete(60s));
+  snapshot = service.snapshot();
+  EXPECT_EQ(snapshot->transitions[0].intervals.size(), 2u);
+}
+
+/// Many quick submissions (an edit drag): the UI never waits, older work is dropped, and the
+/// final picture equals a detection from scratch of the final design.
+TEST(CollisionService, RapidEditsEndInTheSameResultAsAFreshDetection) {
+  CollisionService service;
+  scene::Reconfigurable scene = bench_table();
+  service.submit(std::make_shared<scene::Reconfigurable>(scene), everything());
+  scene::History history;
+  history.execute(scene, scene::insert_key("unfold", "backrest", scene::KeyKind::kTranslation, 0.5));
+  std::uint64_t last = 0;
+  for (int step = 0; step < 30; ++step) {
+    const double z = 0.3 + 0.3 * step / 29.0;
+    const scene::DirtySet dirty = history.execute(
+        scene, scene::set_translation_key("unfold", "backrest", 1, {0.5, {0, 0.1, z}, {0, 0.05, z}, {0, 0.15, z}}));
+    last = service.submit(std::make_shared<scene::Reconfigurable>(scene), dirty);
+    EXPECT_NE(service.snapshot(), nullptr);  // readable at any time
+  }
+  ASSERT_TRUE(service.wait_until_complete(120s));
+  const auto snapshot = service.snapshot();
+  EXPECT_EQ(snapshot->version, last);
+  SpacetimeDetector fresh(0, {});
+  ASSERT_TRUE(fresh.detect(scene, build_body_trees(scene)));
+  const auto expected = consolidate(fresh.contacts(), fresh.containments());
+  ASSERT_EQ(snapshot->transitions[0].intervals.size(), expected.size());
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    EXPECT_EQ(snapshot->transitions[0].intervals[i].t0, expected[i].t0);
+    EXPECT_EQ(snapshot->transitions[0].intervals[i].t1, expected[i].t1);
+  }
+}
+
+}  // namespace
+}  // namespace reconfig::collision
