@@ -1,4 +1,5 @@
 #include "geometry/detail/read_obj.h"
+#include "geometry/detail/split_tokens.h"
 
 #include <charconv>
 #include <string_view>
@@ -10,18 +11,9 @@
 namespace reconfig::geometry::detail {
 namespace {
 
-bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
-
 std::vector<std::string_view> split(std::string_view line) {
   std::vector<std::string_view> tokens;
-  std::size_t i = 0;
-  while (i < line.size()) {
-    while (i < line.size() && is_space(line[i])) ++i;
-    std::size_t j = i;
-    while (j < line.size() && !is_space(line[j])) ++j;
-    if (j > i) tokens.push_back(line.substr(i, j - i));
-    i = j;
-  }
+  split_tokens(line, std::string_view(" \t\r\v\f"), tokens);
   return tokens;
 }
 

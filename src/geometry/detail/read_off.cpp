@@ -1,4 +1,5 @@
 #include "geometry/detail/read_off.h"
+#include "geometry/detail/split_tokens.h"
 
 #include <charconv>
 #include <cmath>
@@ -25,14 +26,7 @@ class Lines {
       ++number_;
       if (const std::size_t hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
       tokens.clear();
-      std::size_t i = 0;
-      while (i < line.size()) {
-        while (i < line.size() && is_space(line[i])) ++i;
-        std::size_t j = i;
-        while (j < line.size() && !is_space(line[j])) ++j;
-        if (j > i) tokens.push_back(line.substr(i, j - i));
-        i = j;
-      }
+      split_tokens(line, std::string_view(" \t\r\v\f\0", 6), tokens);
       if (!tokens.empty()) return true;
     }
     return false;
@@ -41,7 +35,6 @@ class Lines {
   std::string where() const { return "line " + std::to_string(number_); }
 
  private:
-  static bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f' || c == '\0'; }
   std::string_view text_;
   std::size_t position_ = 0;
   long long number_ = 0;

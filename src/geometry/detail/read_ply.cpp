@@ -1,4 +1,5 @@
 #include "geometry/detail/read_ply.h"
+#include "geometry/detail/split_tokens.h"
 
 #include <bit>
 #include <charconv>
@@ -57,14 +58,7 @@ struct Element {
 
 std::vector<std::string_view> split(std::string_view line) {
   std::vector<std::string_view> tokens;
-  std::size_t i = 0;
-  while (i < line.size()) {
-    while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
-    std::size_t j = i;
-    while (j < line.size() && line[j] != ' ' && line[j] != '\t' && line[j] != '\r') ++j;
-    if (j > i) tokens.push_back(line.substr(i, j - i));
-    i = j;
-  }
+  split_tokens(line, std::string_view(" \t\r"), tokens);
   return tokens;
 }
 
