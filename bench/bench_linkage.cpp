@@ -19,7 +19,7 @@ using namespace reconfig::linkage;
 constexpr double kDegree = std::numbers::pi / 180;
 
 Linkage strandbeest(int pairs) {
-  const auto dir = std::filesystem::path(__FILE__).parent_path().parent_path() / "examples" / "linkages";
+  const auto dir = std::filesystem::path(RECONFIG_SOURCE_DIR) / "examples" / "linkages";
   return read_linkage(dir / ("strandbeest_" + std::to_string(pairs) + ".json"));
 }
 
@@ -90,7 +90,7 @@ BENCHMARK(BM_EditEnergyGradient)->Arg(3)->Arg(10)->Unit(benchmark::kMillisecond)
 
 // A whole edit of the Jansen leg: drag the upper joint, keep the foot path.
 void BM_EditJansenDrag(benchmark::State& state) {
-  const auto dir = std::filesystem::path(__FILE__).parent_path().parent_path() / "examples" / "linkages";
+  const auto dir = std::filesystem::path(RECONFIG_SOURCE_DIR) / "examples" / "linkages";
   const Linkage linkage = read_linkage(dir / "jansen.json");
   const int upper = linkage.find_joint("U"), foot = linkage.find_joint("P");
   EditObjectives objectives;
