@@ -92,7 +92,9 @@ TEST_P(ReconfigCliErrors, ExitTwoWithOneLineNamingThePlace) {
   const auto run = run_reconfig(arguments);
   EXPECT_EQ(run.exit_code, 2) << run.out << run.err;
   EXPECT_NE(run.err.find(GetParam().expected), std::string::npos) << run.err;
-  if (!GetParam().scene_text.empty()) EXPECT_EQ(count_lines(run.err), 1) << run.err;
+  if (!GetParam().scene_text.empty()) {
+    EXPECT_EQ(count_lines(run.err), 1) << run.err;
+  }
 }
 
 const char* kHeader = R"("format": "reconfig-scene", "version": 1, )";
@@ -114,7 +116,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadCall{"BadSamples", "check --samples 1 " + bench_table(), "", "samples"},
         BadCall{"UnknownSubcommand", "frobnicate", "", "subcommand"},
         BadCall{"PoseNeedsWhen", "pose " + bench_table() + " -o /tmp/x.obj", "", "--transition"}),
-    [](const ::testing::TestParamInfo<BadCall>& info) { return info.param.name; });
+    [](const ::testing::TestParamInfo<BadCall>& param) { return param.param.name; });
 
 }  // namespace
 }  // namespace reconfig

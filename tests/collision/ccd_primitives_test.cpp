@@ -10,6 +10,7 @@
 
 #include "reconfig/collision/ccd_primitives.h"
 #include "reconfig/geometry/triangle_intersection.h"
+#include "exact_rational.h"
 
 namespace reconfig::collision {
 namespace {
@@ -19,24 +20,9 @@ using geometry::triangles_intersect;
 
 // ---- exact helpers -------------------------------------------------------------------------
 
-using Q3 = std::array<mpq_class, 3>;
-
-Q3 lerp_exact(const Vector3d& x0, const Vector3d& x1, const mpq_class& t) {
-  Q3 r;
-  for (int i = 0; i < 3; ++i) r[i] = mpq_class(x0[i]) + t * (mpq_class(x1[i]) - mpq_class(x0[i]));
-  return r;
-}
-
-mpq_class orient_exact(const Q3& a, const Q3& b, const Q3& c, const Q3& d) {
-  mpq_class m[3][3];
-  for (int i = 0; i < 3; ++i) {
-    m[0][i] = b[i] - a[i];
-    m[1][i] = c[i] - a[i];
-    m[2][i] = d[i] - a[i];
-  }
-  return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
-         m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
-}
+using exact::lerp_exact;
+using exact::orient_exact;
+using exact::Q3;
 
 /// Whether p lies in the closed non-degenerate triangle (a, b, c), exactly (p in its plane).
 bool point_in_triangle_exact(const Q3& p, const Q3& a, const Q3& b, const Q3& c) {

@@ -9,6 +9,7 @@
 
 #include "reconfig/collision/triangle_pair_ccd.h"
 #include "reconfig/geometry/triangle_intersection.h"
+#include "exact_rational.h"
 
 namespace reconfig::collision {
 namespace {
@@ -24,19 +25,9 @@ TrianglePairCcdRequest request(const Tri& a0, const Tri& a1, const Tri& b0, cons
 
 Tri shifted(const Tri& t, const Vector3d& d) { return {t[0] + d, t[1] + d, t[2] + d}; }
 
-/// Exact orientation of four points given as rationals.
-using Q3 = std::array<mpq_class, 3>;
-Q3 at_exact(const Vector3d& x0, const Vector3d& x1, const mpq_class& t) {
-  Q3 r;
-  for (int i = 0; i < 3; ++i) r[i] = mpq_class(x0[i]) + t * (mpq_class(x1[i]) - mpq_class(x0[i]));
-  return r;
-}
-mpq_class orient_exact(const Q3& a, const Q3& b, const Q3& c, const Q3& d) {
-  mpq_class m[3][3];
-  for (int i = 0; i < 3; ++i) m[0][i] = b[i] - a[i], m[1][i] = c[i] - a[i], m[2][i] = d[i] - a[i];
-  return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
-         m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
-}
+using exact::orient_exact;
+using exact::Q3;
+using exact::lerp_exact;
 
 constexpr double kTau = 1e-6;  // the default time tolerance (fraction of the step)
 
@@ -58,11 +49,11 @@ TEST(TrianglePairCcd, VertexEntersTheFaceAtOneThird) {
   EXPECT_FALSE(r.budget_exhausted);
   // The events, exactly: A's low vertex on B's plane at 1/3, the high ones at 1/2.
   const mpq_class first(1, 3), last(1, 2);
-  EXPECT_EQ(orient_exact(at_exact(kBig[0], kBig[0], first), at_exact(kBig[1], kBig[1], first),
-                         at_exact(kBig[2], kBig[2], first), at_exact(a0[0], a1[0], first)),
+  EXPECT_EQ(orient_exact(lerp_exact(kBig[0], kBig[0], first), lerp_exact(kBig[1], kBig[1], first),
+                         lerp_exact(kBig[2], kBig[2], first), lerp_exact(a0[0], a1[0], first)),
             0);
-  EXPECT_EQ(orient_exact(at_exact(kBig[0], kBig[0], last), at_exact(kBig[1], kBig[1], last),
-                         at_exact(kBig[2], kBig[2], last), at_exact(a0[1], a1[1], last)),
+  EXPECT_EQ(orient_exact(lerp_exact(kBig[0], kBig[0], last), lerp_exact(kBig[1], kBig[1], last),
+                         lerp_exact(kBig[2], kBig[2], last), lerp_exact(a0[1], a1[1], last)),
             0);
 }
 
@@ -78,8 +69,8 @@ TEST(TrianglePairCcd, EdgesCrossAtOneHalfThenPierce) {
   EXPECT_GE(r.intervals[0].lo, 0.5 - 2 * kTau);
   EXPECT_EQ(r.intervals[0].hi, 1.0);
   const mpq_class half(1, 2);
-  EXPECT_EQ(orient_exact(at_exact(a[0], a[0], half), at_exact(a[1], a[1], half), at_exact(b0[0], b1[0], half),
-                         at_exact(b0[1], b1[1], half)),
+  EXPECT_EQ(orient_exact(lerp_exact(a[0], a[0], half), lerp_exact(a[1], a[1], half), lerp_exact(b0[0], b1[0], half),
+                         lerp_exact(b0[1], b1[1], half)),
             0);
 }
 
@@ -227,13 +218,17 @@ TEST(TrianglePairCcdOracle, EverySampledIntersectionIsReportedOnIntegerGrids) {
       const double t = static_cast<double>(k) / kSteps;
       const bool hit = sampled_hit(p, k);
       sampled += hit;
-      if (hit) ASSERT_TRUE(r.contains(t)) << "trial " << trial << " t " << t;
+      if (hit) {
+        ASSERT_TRUE(r.contains(t)) << "trial " << trial << " t " << t;
+      }
       // No gross false positives: a sample well inside a reported interval intersects (unless
       // the piece budget ran out: undecided pieces are then reported whole).
       const bool deep = !r.budget_exhausted && std::any_of(r.intervals.begin(), r.intervals.end(), [&](const TimeInterval& i) {
         return i.lo + 2.0 / kSteps < t && t < i.hi - 2.0 / kSteps;
       });
-      if (deep) EXPECT_TRUE(hit) << "trial " << trial << " t " << t;
+      if (deep) {
+        EXPECT_TRUE(hit) << "trial " << trial << " t " << t;
+      }
     }
     if (sampled == kSteps + 1) ++hits;
     else if (sampled == 0) ++misses;
@@ -270,7 +265,9 @@ TEST(TrianglePairCcdOracle, RandomContinuousPairsMatchDenseSampling) {
       bool near_boundary = false;
       for (const TimeInterval& i : r.intervals)
         near_boundary |= std::abs(t - i.lo) < 1e-3 || std::abs(t - i.hi) < 1e-3;
-      if (!near_boundary) EXPECT_EQ(hit, r.contains(t)) << "trial " << trial << " t " << t;
+      if (!near_boundary) {
+        EXPECT_EQ(hit, r.contains(t)) << "trial " << trial << " t " << t;
+      }
     }
     partial += sampled > 0 && sampled <= kSteps;
   }

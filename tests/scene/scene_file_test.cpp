@@ -185,8 +185,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"unknown interpolation",
                  [](json& d) { d["transitions"][0]["tracks"]["lid"]["interpolation"] = "linear"; },
                  "transitions[0].tracks.lid.interpolation", "unknown interpolation"}),
-    [](const ::testing::TestParamInfo<BadInput>& info) {
-      std::string name = info.param.what;
+    [](const ::testing::TestParamInfo<BadInput>& param) {
+      std::string name = param.param.what;
       for (char& c : name)
         if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
       return name;
