@@ -10,6 +10,7 @@
 #include <set>
 
 #include "reconfig/collision/triangle_pair_ccd.h"
+#include "reconfig/geometry/bounding_box.h"
 #include "reconfig/geometry/point_in_solid.h"
 #include "reconfig/geometry/triangle_intersection.h"
 
@@ -356,9 +357,7 @@ Eigen::MatrixX3d proxy_vertices(const scene::Reconfigurable& scene, const PartPr
 /// Whether part `inner` (posed Vi) lies inside part `outer` (posed Vo), their surfaces not crossing.
 bool nested(const scene::Reconfigurable& scene, const BodyTrees& trees, int inner, const Eigen::MatrixX3d& Vi,
             int outer, const Eigen::MatrixX3d& Vo) {
-  Eigen::AlignedBox3d box_i(Vi.colwise().minCoeff().transpose(), Vi.colwise().maxCoeff().transpose());
-  Eigen::AlignedBox3d box_o(Vo.colwise().minCoeff().transpose(), Vo.colwise().maxCoeff().transpose());
-  if (!box_o.contains(box_i)) return false;
+  if (!geometry::bounding_box(Vo).contains(geometry::bounding_box(Vi))) return false;
   const geometry::Mesh posed{Vo, scene.parts[outer].mesh.F};
   for (int v : trees[inner]->component_vertices())
     if (!geometry::point_in_solid(posed, Vi.row(v).transpose())) return false;
@@ -484,16 +483,13 @@ bool SpacetimeDetector::traverse(const scene::Reconfigurable& scene, const BodyT
         for (const auto& [inner, outer, Vi, Vo] : {std::tuple{a, b, &Va, &Vb}, std::tuple{b, a, &Vb, &Va}}) {
           if (!nested(scene, trees, inner, *Vi, outer, *Vo)) continue;
           Containment containment{inner, outer, t0, t1, {}};
-          for (double s : {t0, t1}) {
-            const Eigen::MatrixX3d V = proxy_vertices(scene, proxies_[inner], inner, s);
-            containment.box.extend(Eigen::AlignedBox3d(V.colwise().minCoeff().transpose(), V.colwise().maxCoeff().transpose()));
-          }
-          for (std::size_t k = 0; k < proxies_[inner].times.size(); ++k) {
-            const double s = proxies_[inner].times[k];
-            if (s <= t0 || s >= t1) continue;
-            const Eigen::MatrixX3d V = proxy_vertices(scene, proxies_[inner], inner, s);
-            containment.box.extend(Eigen::AlignedBox3d(V.colwise().minCoeff().transpose(), V.colwise().maxCoeff().transpose()));
-          }
+          // The proxy is linear between its samples: its box over [t0, t1] is that of its
+          // positions at t0, t1 and the samples between.
+          std::vector<double> corners = {t0, t1};
+          for (double s : proxies_[inner].times)
+            if (s > t0 && s < t1) corners.push_back(s);
+          for (double s : corners)
+            containment.box.extend(geometry::bounding_box(proxy_vertices(scene, proxies_[inner], inner, s)));
           containments_.push_back(containment);
           break;
         }

@@ -2,13 +2,12 @@
 
 #include <cassert>
 
+#include "reconfig/geometry/bounding_box.h"
+
 namespace reconfig::view {
 namespace {
 
-void extend(Eigen::AlignedBox3d& box, const Eigen::MatrixX3d& V) {
-  if (V.rows() == 0) return;
-  box.extend(Eigen::AlignedBox3d(V.colwise().minCoeff().transpose(), V.colwise().maxCoeff().transpose()));
-}
+void extend(Eigen::AlignedBox3d& box, const Eigen::MatrixX3d& V) { box.extend(geometry::bounding_box(V)); }
 
 }  // namespace
 
