@@ -316,6 +316,68 @@ std::unique_ptr<Command> set_state_pose(std::string state, std::string part, mot
   });
 }
 
+std::unique_ptr<Command> set_pose_at(const Reconfigurable& scene, std::string transition, std::string part, double t,
+                                     motion::Pose pose) {
+  const int tr = transition_index(scene, transition);
+  if (!(t >= 0.0 && t <= 1.0)) refuse(fmt::format("time {} lies outside [0, 1]", t));
+  if (t == 0.0) return set_state_pose(scene.transitions[tr].from, std::move(part), pose);
+  if (t == 1.0) return set_state_pose(scene.transitions[tr].to, std::move(part), pose);
+  std::string label = fmt::format("move {} at t = {:.3f}", part, t);
+  pose.rotation.normalize();
+  return std::make_unique<PartEdit>(std::move(label), part, false, [=](Reconfigurable& edited, int p) {
+    const int index = transition_index(edited, transition);
+    Track* track = find_track(edited, index, part);
+    if (!track) track = &(edited.transitions[index].tracks[part] = holding_track(edited.pose_at(index, p, 0.0)));
+    if (auto* screw = std::get_if<ScrewPosesTrack>(track)) {
+      auto at = std::lower_bound(screw->poses.begin(), screw->poses.end(), t,
+                                 [](const motion::ScrewKey& k, double time) { return k.time < time; });
+      if (at == screw->poses.end() || at->time != t) {
+        check_insertable(screw->poses, t);
+        at = screw->poses.insert(at, motion::ScrewKey{t, pose});
+      }
+      at->pose = pose;
+      const double lo = at == screw->poses.begin() ? 0.0 : std::prev(at)->time;
+      const double hi = std::next(at) == screw->poses.end() ? 1.0 : std::next(at)->time;
+      return motion_changed(index, p, lo, hi);
+    }
+    auto& keyed = std::get<KeyframedTrack>(*track);
+    const motion::Pose hold = edited.pose_at(index, p, t);
+    if (keyed.translation.empty()) keyed.translation = holding_track(hold).translation;
+    if (keyed.rotation.empty()) keyed.rotation = holding_track(hold).rotation;
+    const auto key_at = [t](auto& keys) {
+      return std::find_if(keys.begin(), keys.end(), [t](const auto& key) { return key.time == t; });
+    };
+    if (key_at(keyed.translation) == keyed.translation.end()) {
+      check_insertable(keyed.translation, t);
+      insert_translation_key(keyed.translation, t);
+    }
+    auto translation = key_at(keyed.translation);
+    const Eigen::Vector3d shift = pose.translation - translation->point;
+    translation->point += shift;
+    translation->in += shift;
+    translation->out += shift;
+    auto rotation = key_at(keyed.rotation);
+    if (rotation == keyed.rotation.end()) {
+      check_insertable(keyed.rotation, t);
+      rotation = keyed.rotation.insert(
+          std::upper_bound(keyed.rotation.begin(), keyed.rotation.end(), t,
+                           [](double time, const motion::RotationKey& k) { return time < k.time; }),
+          motion::RotationKey{t, pose.rotation});
+    }
+    rotation->rotation = pose.rotation;
+    // Each component changed between its own neighbouring keys.
+    const auto span = [t](const auto& keys) {
+      const auto at = std::find_if(keys.begin(), keys.end(), [t](const auto& key) { return key.time == t; });
+      if (at == keys.begin() || std::next(at) == keys.end())
+        refuse("the first and last keys follow the state poses: edit the state instead");
+      return std::pair(std::prev(at)->time, std::next(at)->time);
+    };
+    const auto [t_lo, t_hi] = span(keyed.translation);
+    const auto [r_lo, r_hi] = span(keyed.rotation);
+    return motion_changed(index, p, std::min(t_lo, r_lo), std::max(t_hi, r_hi));
+  });
+}
+
 std::unique_ptr<Command> replace_part_mesh(std::string part, geometry::Mesh mesh) {
   std::string label = fmt::format("replace geometry of {}", part);
   return std::make_unique<PartEdit>(std::move(label), part, true, [mesh = std::move(mesh)](Reconfigurable& scene, int p) {

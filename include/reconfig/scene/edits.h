@@ -39,6 +39,16 @@ std::unique_ptr<Command> remove_key(std::string transition, std::string part, Ke
 /// state with it (translation handles shift by the same offset), so the design stays valid.
 std::unique_ptr<Command> set_state_pose(std::string state, std::string part, motion::Pose pose);
 
+/// Places `part` at `pose` at time t of `transition` — what dragging a part in the editor does.
+/// At t = 0 or t = 1 this edits the pose of the transition's from / to state (as
+/// `set_state_pose`). At an inner time it sets a keyframe: the translation and rotation keys at
+/// t are moved (translation handles shift with the point), and any that are missing are first
+/// inserted where the motion already passes (so only the keyed component changes). A screw
+/// track gets a screw pose at t. A part without a track gets one.
+/// @param scene the scene the command will be applied to (names the transition's end states)
+std::unique_ptr<Command> set_pose_at(const Reconfigurable& scene, std::string transition, std::string part, double t,
+                                     motion::Pose pose);
+
 /// Replaces a part's rest geometry; its pivot `center` is kept so poses keep their meaning.
 std::unique_ptr<Command> replace_part_mesh(std::string part, geometry::Mesh mesh);
 
