@@ -17,3 +17,7 @@ endif()
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(epoxy REQUIRED IMPORTED_TARGET epoxy)
 pkg_check_modules(stb REQUIRED IMPORTED_TARGET stb)
+# The studio: a GLFW window and Dear ImGui 1.86 (libimgui-dev ships no CMake or pkg-config
+# target for its backends: they are inside libimgui.a).
+find_package(glfw3 3.3 REQUIRED)
+pkg_check_modules(imgui REQUIRED IMPORTED_TARGET imgui)

@@ -1,5 +1,7 @@
 // reconfig bench SUITE — runs a benchmark suite (build/bin/bench_<suite>, Google Benchmark) and
 // prints its table with the ratios against the baselines the issues name; --json for scripts.
+// The collision suite also gets a summary per scene (engine with each DOP family, update after
+// a key edit, reference check, FCL, and the ratios), in the table and as "summary" in the JSON.
 
 #include <fmt/format.h>
 #include <unistd.h>
@@ -9,6 +11,7 @@
 #include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <sys/wait.h>
 
 #include "command.h"
@@ -35,7 +38,9 @@ struct Comparison {
 const std::map<std::string, std::vector<Comparison>>& comparisons() {
   static const std::map<std::string, std::vector<Comparison>> table = {
       {"linkage", {{"BM_SymbolicStep", "BM_NewtonStep", "symbolic step vs Newton over rigid bodies"}}},
-      {"collision", {{"BM_FullDetection", "BM_ReferenceCheck", "engine vs reference check (same time resolution)"}}},
+      {"collision",
+       {{"BM_FullDetection", "BM_ReferenceCheck", "engine vs reference check (same time resolution)"},
+        {"BM_FullDetection", "BM_FclPerStep", "engine vs FCL 0.7 at every time step (same time resolution)"}}},
   };
   return table;
 }
@@ -49,9 +54,117 @@ fs::path own_folder() {
 /// The part of a benchmark name after its family ("/3", "/scene:0/dop:28" → "/scene:0").
 std::string suffix_of(const std::string& name, const std::string& family) { return name.substr(family.size()); }
 
-std::string strip_dop(const std::string& suffix) {
-  const auto at = suffix.find("/dop:");
-  return at == std::string::npos ? suffix : suffix.substr(0, at);
+/// What a subject and its baseline have in common: the suffix without the DOP family and
+/// without Google Benchmark's run options ("/scene:0/dop:28/real_time" → "/scene:0").
+std::string comparison_key(const std::string& suffix) {
+  std::string key, segment;
+  std::istringstream in(suffix);
+  while (std::getline(in, segment, '/')) {
+    if (segment.empty()) continue;
+    bool option = false;
+    for (const char* prefix : {"dop:", "real_time", "process_time", "iterations:", "min_time:", "repeats:", "threads:"})
+      option = option || segment.rfind(prefix, 0) == 0;
+    if (!option) key += "/" + segment;
+  }
+  return key;
+}
+
+/// A benchmark's real time in nanoseconds.
+double nanoseconds(const nlohmann::json& b) {
+  const std::string unit = b["time_unit"];
+  const double scale = unit == "s" ? 1e9 : unit == "ms" ? 1e6 : unit == "us" ? 1e3 : 1.0;
+  return b["real_time"].get<double>() * scale;
+}
+
+/// "0.123 s", "45.6 ms", "7.89 µs" from nanoseconds.
+std::string human_time(double ns) {
+  if (ns >= 1e9) return fmt::format("{:.3g} s", ns / 1e9);
+  if (ns >= 1e6) return fmt::format("{:.3g} ms", ns / 1e6);
+  if (ns >= 1e3) return fmt::format("{:.3g} µs", ns / 1e3);
+  return fmt::format("{:.3g} ns", ns);
+}
+
+/// "12× faster" / "3.4× slower" for a speedup (baseline time / subject time).
+std::string human_ratio(double speedup) {
+  return speedup >= 1 ? fmt::format("{:.3g}× faster", speedup) : fmt::format("{:.3g}× slower", 1 / speedup);
+}
+
+/// The collision suite per scene: one row per "scene:N" with the times (ns, null if not run)
+/// of the engine per DOP family, the update, the reference and FCL, and the ratios.
+nlohmann::ordered_json collision_summary(const nlohmann::json& benchmarks) {
+  std::map<std::string, nlohmann::ordered_json> rows;  // by scene key
+  std::vector<std::string> order;
+  const auto row_for = [&](const std::string& key, const nlohmann::json& b) -> nlohmann::ordered_json& {
+    if (!rows.count(key)) {
+      order.push_back(key);
+      nlohmann::ordered_json row;
+      row["scene"] = key.substr(key.find(':') + 1);
+      row["label"] = b.value("label", "");
+      for (const char* counter : {"triangles", "parts", "samples"}) row[counter] = b.value(counter, 0.0);
+      for (const char* column : {"engine_ns", "dop8_ns", "dop80_ns", "update_ns", "reference_ns", "fcl_ns"})
+        row[column] = nullptr;
+      rows[key] = row;
+    }
+    return rows[key];
+  };
+  for (const auto& b : benchmarks) {
+    const std::string name = b["name"];
+    const auto slash = name.find('/');
+    if (slash == std::string::npos || b.value("run_type", "iteration") != "iteration") continue;
+    const std::string family = name.substr(0, slash), suffix = name.substr(slash);
+    const std::string key = comparison_key(suffix);
+    if (key.rfind("/scene:", 0) != 0) continue;
+    std::string column;
+    if (family == "BM_FullDetection") {
+      const auto dop = suffix.find("/dop:");
+      const std::string k = dop == std::string::npos ? "28" : suffix.substr(dop + 5, suffix.find('/', dop + 1) - dop - 5);
+      column = k == "28" ? "engine_ns" : "dop" + k + "_ns";
+    } else if (family == "BM_UpdateAfterKeyEdit") {
+      column = "update_ns";
+    } else if (family == "BM_ReferenceCheck") {
+      column = "reference_ns";
+    } else if (family == "BM_FclPerStep") {
+      column = "fcl_ns";
+    } else {
+      continue;
+    }
+    nlohmann::ordered_json& row = row_for(key, b);
+    row[column] = nanoseconds(b);
+    if (family == "BM_FullDetection" && column == "engine_ns") row["contacts"] = b.value("contacts", 0.0);
+    if (family == "BM_FclPerStep") {
+      row["fcl_colliding_samples"] = b.value("colliding_samples", 0.0);
+      row["fcl_missed_by_engine"] = b.value("missed_by_engine", 0.0);
+    }
+  }
+  nlohmann::ordered_json summary = nlohmann::ordered_json::array();
+  for (const std::string& key : order) {
+    nlohmann::ordered_json& row = rows[key];
+    constexpr std::array<std::pair<const char*, const char*>, 2> kRatios = {
+        {{"engine_vs_reference", "reference_ns"}, {"engine_vs_fcl", "fcl_ns"}}};
+    for (const auto& [column, baseline] : kRatios)
+      row[column] = row["engine_ns"].is_null() || row[baseline].is_null()
+                        ? nlohmann::ordered_json(nullptr)
+                        : nlohmann::ordered_json(row[baseline].get<double>() / row["engine_ns"].get<double>());
+    summary.push_back(row);
+  }
+  return summary;
+}
+
+void print_collision_summary(const nlohmann::ordered_json& summary) {
+  if (summary.empty()) return;
+  const auto time = [](const nlohmann::ordered_json& v) { return v.is_null() ? std::string("—") : human_time(v.get<double>()); };
+  const auto ratio = [](const nlohmann::ordered_json& v) { return v.is_null() ? std::string("—") : human_ratio(v.get<double>()); };
+  fmt::print("\nper scene (real time; engine = 28-DOP full detection at 1 mm; samples = the engine's time resolution)\n");
+  fmt::print("{:<5} {:<36} {:>9} {:>5} {:>7} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>15} {:>15}\n", "scene", "", "triangles",
+             "parts", "samples", "engine", "8-DOP", "80-DOP", "update", "reference", "FCL", "engine/reference",
+             "engine/FCL");
+  for (const auto& row : summary)
+    fmt::print("{:<5} {:<36} {:>9} {:>5} {:>7} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>15} {:>15}\n",
+               row["scene"].get<std::string>(), row["label"].get<std::string>().substr(0, 36),
+               static_cast<long>(row["triangles"].get<double>()), static_cast<long>(row["parts"].get<double>()),
+               static_cast<long>(row["samples"].get<double>()), time(row["engine_ns"]), time(row["dop8_ns"]),
+               time(row["dop80_ns"]), time(row["update_ns"]), time(row["reference_ns"]), time(row["fcl_ns"]),
+               ratio(row["engine_vs_reference"]), ratio(row["engine_vs_fcl"]));
 }
 
 int run_bench(const BenchOptions& options) {
@@ -86,18 +199,12 @@ int run_bench(const BenchOptions& options) {
       for (const auto& subject : report["benchmarks"]) {
         const std::string subject_name = subject["name"];
         if (subject_name.rfind(comparison.subject, 0) != 0) continue;
-        const std::string key = strip_dop(suffix_of(subject_name, comparison.subject));
+        const std::string key = comparison_key(suffix_of(subject_name, comparison.subject));
         for (const auto& baseline : report["benchmarks"]) {
           const std::string baseline_name = baseline["name"];
           if (baseline_name.rfind(comparison.baseline, 0) != 0 ||
-              strip_dop(suffix_of(baseline_name, comparison.baseline)) != key)
+              comparison_key(suffix_of(baseline_name, comparison.baseline)) != key)
             continue;
-          // Both in the same unit after conversion to nanoseconds.
-          const auto nanoseconds = [](const nlohmann::json& b) {
-            const std::string unit = b["time_unit"];
-            const double scale = unit == "s" ? 1e9 : unit == "ms" ? 1e6 : unit == "us" ? 1e3 : 1.0;
-            return b["real_time"].get<double>() * scale;
-          };
           ratios.push_back({{"label", comparison.label},
                             {"subject", subject_name},
                             {"baseline", baseline_name},
@@ -105,23 +212,30 @@ int run_bench(const BenchOptions& options) {
         }
       }
 
+  const nlohmann::ordered_json summary =
+      options.suite == "collision" ? collision_summary(report["benchmarks"]) : nlohmann::ordered_json::array();
   if (options.json) {
     nlohmann::ordered_json out;
     out["suite"] = options.suite;
     out["context"] = report["context"];
     out["benchmarks"] = report["benchmarks"];
     out["ratios"] = ratios;
+    if (options.suite == "collision") out["summary"] = summary;
     fmt::print("{}\n", out.dump(2));
     return kExitOk;
   }
   const auto& context = report["context"];
-  fmt::print("{} — {} CPUs, {}\n\n", options.suite, context.value("num_cpus", 0), context.value("date", ""));
-  fmt::print("{:<44} {:>14} {:>14}\n", "benchmark", "real time", "CPU time");
+  fmt::print("{} — {} CPUs, {}{}\n\n", options.suite, context.value("num_cpus", 0), context.value("date", ""),
+             context.contains("load_avg") && context["load_avg"].is_array() && !context["load_avg"].empty()
+                 ? fmt::format(", load average {:.2f}", context["load_avg"][0].get<double>())
+                 : std::string());
+  fmt::print("{:<56} {:>14} {:>14}\n", "benchmark", "real time", "CPU time");
   for (const auto& b : report["benchmarks"]) {
     const std::string unit = b["time_unit"];
-    fmt::print("{:<44} {:>11.3f} {:<2} {:>11.3f} {:<2}\n", b["name"].get<std::string>(), b["real_time"].get<double>(),
+    fmt::print("{:<56} {:>11.3f} {:<2} {:>11.3f} {:<2}\n", b["name"].get<std::string>(), b["real_time"].get<double>(),
                unit, b["cpu_time"].get<double>(), unit);
   }
+  print_collision_summary(summary);
   if (!ratios.empty()) fmt::print("\n");
   for (const auto& r : ratios)
     fmt::print("{}: {} is {:.1f}× {} than {}\n", r["label"].get<std::string>(), r["subject"].get<std::string>(),

@@ -1,5 +1,7 @@
 #include "reconfig/render/renderer.h"
 
+#include "reconfig/render/render_target.h"
+
 #include <epoxy/gl.h>
 
 #include <algorithm>
@@ -413,19 +415,9 @@ Image Renderer::render(const DrawList& list, const view::Camera& camera, int wid
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, r.resolve_fbo);
   glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
   glBindFramebuffer(GL_READ_FRAMEBUFFER, r.resolve_fbo);
-  Image image;
-  image.width = width;
-  image.height = height;
-  image.rgba.resize(static_cast<std::size_t>(width) * height * 4);
-  std::vector<std::uint8_t> bottom_up(image.rgba.size());
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, bottom_up.data());
+  Image image = read_bound_framebuffer(width, height);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   check_gl("reading pixels");
-  const std::size_t row = static_cast<std::size_t>(width) * 4;
-  for (int y = 0; y < height; ++y)
-    std::copy_n(bottom_up.begin() + static_cast<std::ptrdiff_t>((height - 1 - y) * row), row,
-                image.rgba.begin() + static_cast<std::ptrdiff_t>(y * row));
   return image;
 }
 

@@ -27,7 +27,9 @@ DrawList scene_draw_list(const scene::Reconfigurable& scene, const SceneDrawRequ
   assert(request.transition >= 0 || request.state >= 0);
   DrawList list;
   const int parts = static_cast<int>(scene.parts.size());
-  auto posed = [&](int part, double t) {
+  auto posed = [&](int part, double t) -> Eigen::MatrixX3d {
+    for (const auto& [overridden, pose] : request.pose_overrides)
+      if (overridden == part) return scene::posed_part_vertices(scene.parts[part], pose);
     return request.transition >= 0 ? scene.posed_vertices(request.transition, part, t)
                                    : scene.posed_vertices_in_state(request.state, part);
   };

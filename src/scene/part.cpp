@@ -15,4 +15,9 @@ geometry::Mesh Part::primitive_mesh(const PartSource& source) {
 
 Eigen::Vector3d part_center(const geometry::Mesh& mesh) { return geometry::mass_properties(mesh).center_of_mass; }
 
+Eigen::MatrixX3d posed_part_vertices(const Part& part, const motion::Pose& pose) {
+  const Eigen::Isometry3d M = pose.to_isometry(part.center);
+  return (part.mesh.V * M.linear().transpose()).rowwise() + M.translation().transpose();
+}
+
 }  // namespace reconfig::scene

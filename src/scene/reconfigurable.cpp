@@ -12,11 +12,6 @@ int find_by_name(const std::vector<Named>& items, const std::string& name) {
   return -1;
 }
 
-Eigen::MatrixX3d place(const Part& part, const motion::Pose& pose) {
-  const Eigen::Isometry3d M = pose.to_isometry(part.center);
-  return (part.mesh.V * M.linear().transpose()).rowwise() + M.translation().transpose();
-}
-
 }  // namespace
 
 int Reconfigurable::find_part(const std::string& name) const { return find_by_name(parts, name); }
@@ -35,12 +30,12 @@ motion::Pose Reconfigurable::pose_at(int transition, int part, double t) const {
 }
 
 Eigen::MatrixX3d Reconfigurable::posed_vertices(int transition, int part, double t) const {
-  return place(parts.at(part), pose_at(transition, part, t));
+  return posed_part_vertices(parts.at(part), pose_at(transition, part, t));
 }
 
 Eigen::MatrixX3d Reconfigurable::posed_vertices_in_state(int state, int part) const {
   const Part& p = parts.at(part);
-  return place(p, states.at(state).pose_of(p.name));
+  return posed_part_vertices(p, states.at(state).pose_of(p.name));
 }
 
 }  // namespace reconfig::scene

@@ -20,6 +20,8 @@ struct SceneDrawRequest {
   std::vector<view::GhostSample> ghosts;      ///< times of `transition` drawn as ghosts
   float ghost_opacity = 0.3f;                 ///< opacity of a ghost of weight 1
   std::vector<Eigen::AlignedBox3d> boxes;     ///< e.g. collision interval boxes
+  /// Parts drawn at these poses instead of their own at `time` (a drag in progress).
+  std::vector<std::pair<int, motion::Pose>> pose_overrides;
   bool grid = true;
 };
 

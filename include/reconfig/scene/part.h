@@ -9,6 +9,7 @@
 #include <variant>
 
 #include "reconfig/geometry/mesh.h"
+#include "reconfig/motion/pose.h"
 
 namespace reconfig::scene {
 
@@ -49,6 +50,9 @@ struct Part {
   /// Builds the geometry of a primitive source (boxes, cylinders, spheres).
   static geometry::Mesh primitive_mesh(const PartSource& source);
 };
+
+/// The part's rest mesh moved to `pose` (about its pivot): #V×3 positions.
+Eigen::MatrixX3d posed_part_vertices(const Part& part, const motion::Pose& pose);
 
 /// The center of mass of the solid bounded by `mesh` (eq. 9's c).
 Eigen::Vector3d part_center(const geometry::Mesh& mesh);

@@ -1,0 +1,81 @@
+#pragma once
+/// @file
+/// One open design in the studio: the scene, its undo history, where it is saved, its autosave
+/// and the collision service that keeps its collision intervals up to date.
+
+#include <chrono>
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "reconfig/collision/collision_service.h"
+#include "reconfig/scene/command.h"
+#include "reconfig/scene/history.h"
+#include "reconfig/scene/reconfigurable.h"
+
+namespace reconfig::studio {
+
+/// The scene is immutable between edits: every edit makes a new version (a copy with the
+/// command applied), hands it to the collision service together with the command's dirty set
+/// and keeps it as the current one, so the service's background thread never sees a scene
+/// that changes under it.
+class Document {
+ public:
+  using Clock = std::chrono::steady_clock;
+
+  /// Loads a scene file. @throws InputError naming the file and JSON path of the problem
+  static std::unique_ptr<Document> open(const std::filesystem::path& file,
+                                        collision::CollisionServiceOptions options = {});
+  /// Loads the autosave of `file` instead of the file itself (crash recovery): the document
+  /// still saves to `file` and starts out modified. @throws InputError
+  static std::unique_ptr<Document> recover(const std::filesystem::path& file,
+                                           collision::CollisionServiceOptions options = {});
+
+  Document(scene::Reconfigurable scene, std::filesystem::path file, collision::CollisionServiceOptions options);
+
+  const scene::Reconfigurable& scene() const { return *scene_; }
+  const std::filesystem::path& file() const { return file_; }
+  /// Changed since it was opened or last saved.
+  bool modified() const { return modified_; }
+
+  /// Applies `command` as one undoable step. A command the scene refuses (InputError) leaves
+  /// everything as it was. @return "" on success, else the reason it was refused
+  std::string execute(std::unique_ptr<scene::Command> command);
+  bool undo();
+  bool redo();
+  std::string undo_label() const { return history_.undo_label(); }
+  std::string redo_label() const { return history_.redo_label(); }
+
+  /// Writes the scene atomically to its file (or to `file`, which it then belongs to) and
+  /// drops the autosave. @throws InputError when the file cannot be written
+  void save();
+  void save_as(const std::filesystem::path& file);
+
+  /// Writes the autosave when the scene changed since the last one and `interval` has passed
+  /// since then. Never throws: a failed autosave is reported in the return value.
+  /// @return "" when nothing went wrong
+  std::string autosave_if_due(Clock::time_point now, std::chrono::milliseconds interval);
+  /// Where the autosave of `file` lives: a hidden file next to it (so relative mesh paths
+  /// stay valid), e.g. `dir/.scene.json.autosave`.
+  static std::filesystem::path autosave_path(const std::filesystem::path& file);
+  /// Whether `file` has an autosave newer than itself (unsaved work from a crash).
+  static bool has_recovery(const std::filesystem::path& file);
+
+  const collision::CollisionService& collisions() const { return *service_; }
+  /// The version number of the current scene as submitted to the collision service.
+  std::uint64_t version() const { return version_; }
+
+ private:
+  void publish(std::shared_ptr<const scene::Reconfigurable> next, const scene::DirtySet& dirty);
+
+  std::shared_ptr<const scene::Reconfigurable> scene_;
+  std::filesystem::path file_;
+  scene::History history_;
+  std::unique_ptr<collision::CollisionService> service_;
+  std::uint64_t version_ = 0;
+  bool modified_ = false;
+  bool autosave_pending_ = false;
+  Clock::time_point last_autosave_ = Clock::now();
+};
+
+}  // namespace reconfig::studio

@@ -1,0 +1,55 @@
+#include <epoxy/gl.h>
+// After epoxy, which provides the GL declarations: GLFW must not include GL/gl.h.
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+
+#include "frontend.h"
+#include "keys.h"
+#include "reconfig/render/glfw_window.h"
+
+namespace reconfig::studio {
+
+static_assert(keys::kSpace == GLFW_KEY_SPACE && keys::kI == GLFW_KEY_I && keys::kZ == GLFW_KEY_Z &&
+              keys::kDelete == GLFW_KEY_DELETE && keys::kLeft == GLFW_KEY_LEFT && keys::kRight == GLFW_KEY_RIGHT &&
+              keys::kEscape == GLFW_KEY_ESCAPE && keys::kEnd == GLFW_KEY_END && keys::kS == GLFW_KEY_S,
+              "keys.h must use GLFW's key codes");
+
+void run_in_window(StudioOptions options, const std::optional<std::filesystem::path>& scene, int width, int height) {
+  render::GlfwWindow window("Reconfig Studio", width, height);
+  UiContext ui;
+  ImGui_ImplGlfw_InitForOpenGL(window.handle(), true);
+  {
+    Studio studio(std::move(options));
+    if (scene) studio.open(*scene);
+    std::string title;
+    while (!studio.quit_requested()) {
+      window.poll_events(1.0 / 60);
+      if (window.close_requested()) {
+        window.cancel_close();
+        studio.request_close();
+      }
+      ImGui_ImplOpenGL3_NewFrame();
+      ImGui_ImplGlfw_NewFrame();
+      ImGui::NewFrame();
+      studio.frame(std::chrono::steady_clock::now());
+      ImGui::Render();
+      int fb_width = 0, fb_height = 0;
+      window.framebuffer_size(fb_width, fb_height);
+      glViewport(0, 0, fb_width, fb_height);
+      glClearColor(0.9f, 0.9f, 0.92f, 1);
+      glClear(GL_COLOR_BUFFER_BIT);
+      ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+      window.swap_buffers();
+      const Document* document = studio.document();
+      const std::string next = document ? "Reconfig Studio — " + document->file().filename().string() +
+                                              (document->modified() ? " •" : "")
+                                        : "Reconfig Studio";
+      if (next != title) window.set_title(title = next);
+    }
+  }
+  ImGui_ImplGlfw_Shutdown();
+}
+
+}  // namespace reconfig::studio

@@ -1,0 +1,135 @@
+// The inspector: the selected part's pose at the current time as numbers (editing them sets a
+// key or the state pose), the selected key with its Bézier handles, undo/redo, ghost settings
+// and the list of collision intervals of the open transition.
+
+#include <fmt/format.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
+
+#include "panel_window.h"
+#include "studio.h"
+
+namespace reconfig::studio {
+namespace {
+
+/// A double[3] field; true once an edit is finished (Enter or leaving the field).
+bool vector_field(const char* label, Eigen::Vector3d& value) {
+  ImGui::InputScalarN(label, ImGuiDataType_Double, value.data(), 3, nullptr, nullptr, "%.4f");
+  return ImGui::IsItemDeactivatedAfterEdit();
+}
+
+Eigen::Vector3d euler_degrees(const Eigen::Quaterniond& q) {
+  return q.toRotationMatrix().eulerAngles(2, 1, 0).reverse() * 180 / M_PI;  // x, y, z about fixed axes
+}
+
+Eigen::Quaterniond from_euler_degrees(const Eigen::Vector3d& degrees) {
+  const Eigen::Vector3d r = degrees * M_PI / 180;
+  return Eigen::AngleAxisd(r.z(), Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(r.y(), Eigen::Vector3d::UnitY()) *
+         Eigen::AngleAxisd(r.x(), Eigen::Vector3d::UnitX());
+}
+
+}  // namespace
+
+void Studio::draw_inspector() {
+  const PanelRects rects = current_panel_rects();
+  begin_panel("Inspector", rects.inspector_pos, rects.inspector_size);
+  if (!document_) {
+    ImGui::End();
+    return;
+  }
+  const scene::Reconfigurable& scene = document_->scene();
+
+  const char* preview = selected_part_ >= 0 ? scene.parts[selected_part_].name.c_str() : "(click a part)";
+  if (ImGui::BeginCombo("part", preview)) {
+    for (int p = 0; p < static_cast<int>(scene.parts.size()); ++p)
+      if (ImGui::Selectable(scene.parts[p].name.c_str(), p == selected_part_)) select_part(p);
+    ImGui::EndCombo();
+  }
+  if (const auto pose = selected_pose()) {
+    ImGui::TextDisabled(active_transition_ < 0 ? "pose in this state"
+                        : time_ <= 0 || time_ >= 1 ? "pose at an end: edits the state"
+                                                   : "pose at this time: edits set a key");
+    Eigen::Vector3d translation = pose->translation;
+    if (vector_field("translation", translation)) {
+      motion::Pose edited = *pose;
+      edited.translation = translation;
+      apply_pose(edited);
+    }
+    Eigen::Vector3d angles = euler_degrees(pose->rotation);
+    if (vector_field("rotation °", angles)) {
+      motion::Pose edited = *pose;
+      edited.rotation = from_euler_degrees(angles);
+      apply_pose(edited);
+    }
+  }
+
+  // The selected key, with its Bézier handles.
+  if (selected_key_ && active_transition_ >= 0 && selected_part_ >= 0) {
+    const auto& tracks = scene.transitions[active_transition_].tracks;
+    const auto it = tracks.find(scene.parts[selected_part_].name);
+    const auto* track = it == tracks.end() ? nullptr : std::get_if<scene::KeyframedTrack>(&it->second);
+    const std::string& transition = scene.transitions[active_transition_].name;
+    const std::string& part = scene.parts[selected_part_].name;
+    ImGui::Separator();
+    if (track && selected_key_->kind == scene::KeyKind::kTranslation &&
+        selected_key_->index < static_cast<int>(track->translation.size())) {
+      motion::TranslationKey key = track->translation[selected_key_->index];
+      ImGui::Text("translation key %d at t = %.3f", selected_key_->index, key.time);
+      bool changed = vector_field("point", key.point);
+      changed = vector_field("in handle", key.in) || changed;
+      changed = vector_field("out handle", key.out) || changed;
+      if (changed) execute(scene::set_translation_key(transition, part, selected_key_->index, key));
+    } else if (track && selected_key_->kind == scene::KeyKind::kRotation &&
+               selected_key_->index < static_cast<int>(track->rotation.size())) {
+      motion::RotationKey key = track->rotation[selected_key_->index];
+      ImGui::Text("rotation key %d at t = %.3f", selected_key_->index, key.time);
+      Eigen::Vector3d angles = euler_degrees(key.rotation);
+      if (vector_field("angles °", angles)) {
+        key.rotation = from_euler_degrees(angles);
+        execute(scene::set_rotation_key(transition, part, selected_key_->index, key));
+      }
+    }
+    if (ImGui::Button("Remove key (Del)")) delete_selected_key();
+  }
+  if (ImGui::Button("Insert key (I)")) insert_key();
+
+  ImGui::Separator();
+  ImGui::BeginDisabled(document_->undo_label().empty());
+  if (ImGui::Button("Undo")) undo();
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  ImGui::BeginDisabled(document_->redo_label().empty());
+  if (ImGui::Button("Redo")) redo();
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  ImGui::TextDisabled("%s", document_->undo_label().c_str());
+
+  ImGui::Separator();
+  ImGui::Checkbox("ghosts", &show_ghosts);
+  ImGui::SliderInt("ghost count", &ghost_count, 1, 8);
+  ImGui::SliderFloat("ghost spacing", &ghost_spacing, 0.01f, 0.25f, "%.2f");
+
+  // The collision intervals of the open transition; clicking one jumps to it.
+  if (const auto snapshot = collisions(); snapshot && active_transition_ >= 0) {
+    ImGui::Separator();
+    for (const auto& transition : snapshot->transitions) {
+      if (transition.transition != active_transition_) continue;
+      ImGui::Text("%zu collision intervals%s", transition.intervals.size(),
+                  transition.up_to_date ? "" : " (detecting...)");
+      for (std::size_t i = 0; i < transition.intervals.size(); ++i) {
+        const auto& interval = transition.intervals[i];
+        std::string parts;
+        for (const int p : interval.parts) parts += (parts.empty() ? "" : " × ") + scene.parts[p].name;
+        const std::string label = fmt::format("{:.3f}-{:.3f}  {}##ci{}", interval.t0, interval.t1, parts, i);
+        if (ImGui::Selectable(label.c_str(), interval.t0 <= time_ && time_ <= interval.t1)) {
+          playing_ = false;
+          set_time(interval.t0);
+        }
+      }
+    }
+  }
+  ImGui::End();
+}
+
+}  // namespace reconfig::studio

@@ -1,0 +1,117 @@
+// reconfig-studio [SCENE] — the interactive editor, or (with --screenshot, --frames, --script
+// or --headless) the same UI run headless through EGL for scripts, tests and pictures.
+//
+// Exit codes: 0 success; 1 a script's expectation failed; 2 bad input (unreadable scene or
+// script, bad option, no OpenGL context).
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <fstream>
+#include <iostream>
+#include <numeric>
+#include <sstream>
+
+#include "frontend.h"
+#include "reconfig/common/write_atomically.h"
+#include "reconfig/render/image.h"
+#include "script.h"
+
+namespace {
+
+using namespace reconfig;
+
+struct Options {
+  std::string scene, screenshot, script, frame_times, size = "1280x800";
+  int frames = 0;
+  bool headless = false, ghosts = false;
+  double time = -1;
+};
+
+int run_headless(const Options& options, int width, int height) {
+  studio::HeadlessFrontend frontend(width, height);
+  studio::Studio& studio = frontend.studio();
+  studio.show_ghosts = options.ghosts;
+  if (!options.scene.empty() && !studio.open(options.scene)) {
+    std::cerr << "reconfig-studio: " << studio.status() << "\n";
+    return 2;
+  }
+  if (options.time >= 0) studio.set_time(options.time);
+  std::vector<double> times;
+  frontend.run_frame();
+  if (!options.script.empty()) {
+    std::ifstream in(options.script);
+    if (!in) {
+      std::cerr << "reconfig-studio: cannot read the script " << options.script << "\n";
+      return 2;
+    }
+    std::stringstream text;
+    text << in.rdbuf();
+    try {
+      studio::run_script(frontend, text.str(), options.script);
+    } catch (const studio::ScriptError& error) {
+      std::cerr << "reconfig-studio: " << error.what() << "\n";
+      return 1;
+    }
+  }
+  for (int i = 0; i < options.frames; ++i) times.push_back(frontend.run_frame());
+  if (!options.screenshot.empty()) render::write_png(options.screenshot, frontend.screenshot());
+  if (!options.frame_times.empty() && !times.empty()) {
+    std::vector<double> sorted = times;
+    std::sort(sorted.begin(), sorted.end());
+    const double mean = std::accumulate(times.begin(), times.end(), 0.0) / times.size();
+    write_atomically(options.frame_times, [&](std::ostream& out) {
+      out << fmt::format(R"({{"frames": {}, "width": {}, "height": {}, "mean_ms": {:.3f}, "median_ms": {:.3f}, )"
+                         R"("p95_ms": {:.3f}, "max_ms": {:.3f}}})",
+                         times.size(), width, height, mean, sorted[sorted.size() / 2],
+                         sorted[std::min(sorted.size() - 1, sorted.size() * 95 / 100)], sorted.back())
+          << "\n";
+    });
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Reconfig Studio: edit reconfigurables and see their collisions as you edit"};
+  Options options;
+  app.add_option("scene", options.scene, "scene file (.json) to open");
+  app.add_flag("--headless", options.headless, "no window: draw through EGL offscreen");
+  app.add_option("--size", options.size, "window or image size WIDTHxHEIGHT")->capture_default_str();
+  app.add_option("--screenshot", options.screenshot, "save the last frame as PNG and exit (headless)");
+  app.add_option("--frames", options.frames, "frames to run before the screenshot (headless)");
+  app.add_option("--script", options.script, "replay UI actions from this file (headless); see docs/studio.md");
+  app.add_option("--frame-times", options.frame_times, "write frame time statistics of --frames as JSON");
+  app.add_option("--time", options.time, "start at this time of the first transition");
+  app.add_flag("--ghosts", options.ghosts, "show ghosts of moving parts");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& error) {
+    const int code = app.exit(error);
+    return code == 0 ? 0 : 2;
+  }
+  int width = 0, height = 0;
+  char x = 0;
+  std::istringstream size(options.size);
+  if (!(size >> width >> x >> height) || x != 'x' || width < 64 || height < 64 || width > 8192 || height > 8192) {
+    std::cerr << "reconfig-studio: --size must look like 1280x800 (64 to 8192 pixels each way)\n";
+    return 2;
+  }
+  const bool headless = options.headless || !options.screenshot.empty() || !options.script.empty() ||
+                        options.frames > 0;
+  try {
+    if (headless) return run_headless(options, width, height);
+    studio::StudioOptions studio_options;
+    studio::run_in_window(studio_options, options.scene.empty() ? std::nullopt : std::optional(options.scene), width,
+                          height);
+  } catch (const render::ContextError& error) {
+    std::cerr << "reconfig-studio: " << error.what() << "\n";
+    return 2;
+  } catch (const std::exception& error) {
+    std::cerr << "reconfig-studio: " << error.what() << "\n";
+    return 2;
+  }
+  return 0;
+}

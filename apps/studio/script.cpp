@@ -1,0 +1,287 @@
+#include "script.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <sstream>
+
+#include "keys.h"
+#include "reconfig/render/image.h"
+
+namespace reconfig::studio {
+
+ScriptError::ScriptError(const std::string& file, int line, const std::string& message)
+    : std::runtime_error(fmt::format("{}:{}: {}", file, line, message)) {}
+
+namespace {
+
+/// Runs frames with the mouse at each point in turn, the button held from the first to the
+/// last (a press, a drag through the points, a release).
+void drag_through(HeadlessFrontend& frontend, const std::vector<ImVec2>& points, int button = 0) {
+  SimulatedInput& input = frontend.input();
+  input.mouse = points.front();
+  frontend.run_frame();  // hover first: ImGui sees the press where the mouse already is
+  input.buttons[button] = true;
+  frontend.run_frame();
+  for (std::size_t i = 1; i < points.size(); ++i) {
+    input.mouse = points[i];
+    frontend.run_frame();
+  }
+  input.buttons[button] = false;
+  frontend.run_frame();
+  frontend.run_frame();
+}
+
+std::vector<ImVec2> segment(ImVec2 a, ImVec2 b, int steps) {
+  std::vector<ImVec2> points;
+  for (int i = 0; i <= steps; ++i) {
+    const float f = static_cast<float>(i) / steps;
+    points.push_back({a.x + f * (b.x - a.x), a.y + f * (b.y - a.y)});
+  }
+  return points;
+}
+
+GizmoHandle parse_handle(const std::string& name) {
+  static const std::pair<const char*, GizmoHandle> kHandles[] = {
+      {"move-x", GizmoHandle::kMoveX},     {"move-y", GizmoHandle::kMoveY},     {"move-z", GizmoHandle::kMoveZ},
+      {"rotate-x", GizmoHandle::kRotateX}, {"rotate-y", GizmoHandle::kRotateY}, {"rotate-z", GizmoHandle::kRotateZ}};
+  for (const auto& [label, handle] : kHandles)
+    if (name == label) return handle;
+  return GizmoHandle::kNone;
+}
+
+class Runner {
+ public:
+  Runner(HeadlessFrontend& frontend, std::string label) : frontend_(frontend), label_(std::move(label)) {}
+
+  void run(const std::string& text) {
+    std::istringstream lines(text);
+    std::string line;
+    while (std::getline(lines, line)) {
+      ++line_;
+      if (const auto hash = line.find('#'); hash != std::string::npos) line.erase(hash);
+      std::istringstream words(line);
+      std::string action;
+      if (!(words >> action)) continue;
+      std::vector<std::string> args;
+      for (std::string word; words >> word;) args.push_back(word);
+      perform(action, args);
+    }
+  }
+
+ private:
+  [[noreturn]] void fail(const std::string& message) const { throw ScriptError(label_, line_, message); }
+
+  double number(const std::vector<std::string>& args, std::size_t i, const char* what) const {
+    if (i >= args.size()) fail(fmt::format("missing {}", what));
+    try {
+      std::size_t used = 0;
+      const double value = std::stod(args[i], &used);
+      if (used == args[i].size() && std::isfinite(value)) return value;
+    } catch (const std::exception&) {
+    }
+    fail(fmt::format("{} must be a number, not \"{}\"", what, args[i]));
+  }
+
+  Studio& studio() { return frontend_.studio(); }
+
+  const scene::Reconfigurable& scene() {
+    if (!studio().document()) fail("no design is open");
+    return studio().document()->scene();
+  }
+
+  int transition_named(const std::string& name) {
+    const int index = scene().find_transition(name);
+    if (index < 0) fail(fmt::format("no transition \"{}\"", name));
+    return index;
+  }
+
+  const collision::TransitionSnapshot& current_collisions() {
+    const auto snapshot = studio().collisions();
+    const int transition = studio().active_transition();
+    if (!snapshot || transition < 0) fail("no transition is open");
+    for (const auto& t : snapshot->transitions)
+      if (t.transition == transition) {
+        snapshot_ = snapshot;
+        return t;
+      }
+    fail("the collision service has no result for the open transition yet (wait-collisions first)");
+  }
+
+  void click(ImVec2 at, int button = 0) { drag_through(frontend_, {at}, button); }
+
+  void press_key(const std::string& chord) {
+    SimulatedInput& input = frontend_.input();
+    std::string rest = chord;
+    bool ctrl = false, shift = false;
+    for (std::size_t plus; (plus = rest.find('+')) != std::string::npos; rest.erase(0, plus + 1)) {
+      const std::string modifier = rest.substr(0, plus);
+      if (modifier == "ctrl") ctrl = true;
+      else if (modifier == "shift") shift = true;
+      else fail(fmt::format("unknown modifier \"{}\" (ctrl, shift)", modifier));
+    }
+    const int code = keys::from_name(rest.c_str());
+    if (code < 0) fail(fmt::format("unknown key \"{}\"", rest));
+    input.ctrl = ctrl;
+    input.shift = shift;
+    input.keys_down.insert(code);
+    frontend_.run_frame();
+    input.keys_down.erase(code);
+    input.ctrl = input.shift = false;
+    frontend_.run_frame();
+  }
+
+  void perform(const std::string& action, const std::vector<std::string>& args) {
+    SimulatedInput& input = frontend_.input();
+    if (action == "frames") {
+      const int count = static_cast<int>(number(args, 0, "frame count"));
+      for (int i = 0; i < count; ++i) frontend_.run_frame();
+    } else if (action == "open") {
+      if (args.empty()) fail("open needs a file");
+      if (!studio().open(args[0])) fail(studio().status());
+      frontend_.run_frame();
+    } else if (action == "wait-collisions") {
+      const double seconds = args.empty() ? 60 : number(args, 0, "timeout in seconds");
+      if (!frontend_.run_until_collisions_current(std::chrono::milliseconds(static_cast<long>(seconds * 1000))))
+        fail(fmt::format("collision detection did not finish within {} s", seconds));
+    } else if (action == "mouse") {
+      input.mouse = {static_cast<float>(number(args, 0, "x")), static_cast<float>(number(args, 1, "y"))};
+      frontend_.run_frame();
+    } else if (action == "click") {
+      click({static_cast<float>(number(args, 0, "x")), static_cast<float>(number(args, 1, "y"))});
+    } else if (action == "drag") {
+      const ImVec2 a{static_cast<float>(number(args, 0, "x0")), static_cast<float>(number(args, 1, "y0"))};
+      const ImVec2 b{static_cast<float>(number(args, 2, "x1")), static_cast<float>(number(args, 3, "y1"))};
+      drag_through(frontend_, segment(a, b, 8));
+    } else if (action == "scroll") {
+      input.wheel = static_cast<float>(number(args, 0, "wheel steps"));
+      frontend_.run_frame();
+    } else if (action == "key") {
+      if (args.empty()) fail("key needs a key name, e.g. space, ctrl+z, ctrl+shift+z, i, delete");
+      press_key(args[0]);
+    } else if (action == "click-part") {
+      if (args.empty()) fail("click-part needs a part name");
+      const int part = scene().find_part(args[0]);
+      if (part < 0) fail(fmt::format("no part \"{}\"", args[0]));
+      click(part_point(part));
+    } else if (action == "click-edge") {
+      if (args.empty()) fail("click-edge needs a transition name");
+      const auto at = studio().graph_edge_point(transition_named(args[0]));
+      if (!at) fail("the state graph is not drawn");
+      click(*at);
+    } else if (action == "scrub") {
+      click(studio().timeline_point(std::clamp(number(args, 0, "time"), 0.0, 1.0)));
+    } else if (action == "drag-gizmo") {
+      if (args.empty()) fail("drag-gizmo needs a handle (move-x … rotate-z) and an amount");
+      drag_gizmo(args[0], number(args, 1, "amount (world units or degrees)"));
+    } else if (action == "drag-key") {
+      drag_key(args);
+    } else if (action == "expect-collisions") {
+      const auto& collisions = current_collisions();
+      const int expected = static_cast<int>(number(args, 0, "interval count"));
+      if (static_cast<int>(collisions.intervals.size()) != expected)
+        fail(fmt::format("expected {} collision intervals in the timeline, it shows {}", expected,
+                         collisions.intervals.size()));
+    } else if (action == "expect-collision-at" || action == "expect-free-at") {
+      const double t = number(args, 0, "time");
+      bool colliding = false;
+      for (const auto& interval : current_collisions().intervals) colliding |= interval.t0 <= t && t <= interval.t1;
+      if (colliding != (action == "expect-collision-at"))
+        fail(fmt::format("expected {} at t = {}", colliding ? "no collision" : "a collision", t));
+    } else if (action == "expect-selected") {
+      const int selected = studio().selected_part();
+      const std::string name = selected >= 0 ? scene().parts[selected].name : "none";
+      if (args.empty() || name != args[0]) fail(fmt::format("expected {} selected, not {}", args.empty() ? "?" : args[0], name));
+    } else if (action == "expect-time") {
+      const double expected = number(args, 0, "time"), tolerance = args.size() > 1 ? number(args, 1, "tolerance") : 1e-3;
+      if (std::abs(studio().time() - expected) > tolerance)
+        fail(fmt::format("expected time {}, the timeline shows {:.4f}", expected, studio().time()));
+    } else if (action == "expect-transition") {
+      const int active = studio().active_transition();
+      if (args.empty() || active != transition_named(args[0]))
+        fail(fmt::format("expected transition {} open", args.empty() ? "?" : args[0]));
+    } else if (action == "expect-status") {
+      std::string text;
+      for (const auto& word : args) text += (text.empty() ? "" : " ") + word;
+      if (studio().status().find(text) == std::string::npos)
+        fail(fmt::format("expected the status to say \"{}\", it says \"{}\"", text, studio().status()));
+    } else if (action == "screenshot") {
+      if (args.empty()) fail("screenshot needs a file");
+      frontend_.run_frame();
+      render::write_png(args[0], frontend_.screenshot());
+    } else if (action == "save") {
+      const bool saved = args.empty() ? studio().save() : studio().save_as(args[0]);
+      if (!saved) fail(studio().status());
+    } else {
+      fail(fmt::format("unknown action \"{}\"", action));
+    }
+  }
+
+  /// A pixel where part `part` is visible: the projected vertex nearest the camera of the ones
+  /// whose pick ray hits this part first, else its projected center.
+  ImVec2 part_point(int part) {
+    const Eigen::MatrixX3d V = studio().active_transition() >= 0
+                                   ? scene().posed_vertices(studio().active_transition(), part, studio().time())
+                                   : Eigen::MatrixX3d(scene().parts[part].mesh.V);
+    const Eigen::Vector3d center = V.colwise().mean().transpose();
+    const auto at = studio().viewport_point(center);
+    if (!at) fail("the part is behind the camera");
+    return *at;
+  }
+
+  void drag_gizmo(const std::string& name, double amount) {
+    const GizmoHandle handle = parse_handle(name);
+    if (handle == GizmoHandle::kNone) fail(fmt::format("unknown handle \"{}\"", name));
+    const auto gizmo = studio().gizmo();
+    if (!gizmo) fail("no gizmo: select a part first");
+    const Eigen::Vector3d axis = handle_axis(handle);
+    Eigen::Vector3d from, to;
+    if (!is_rotation(handle)) {
+      from = gizmo->center + 0.7 * gizmo->arrow_length * axis;
+      to = from + amount * axis;
+    } else {
+      // Along the ring, starting at the point facing the camera most.
+      const Eigen::Vector3d u = axis.unitOrthogonal(), v = axis.cross(u);
+      const Eigen::Vector3d toward = -studio().camera().forward();
+      const double start = std::atan2(toward.dot(v), toward.dot(u));
+      from = gizmo->center + gizmo->ring_radius * (std::cos(start) * u + std::sin(start) * v);
+      const double end = start + amount * M_PI / 180;
+      to = gizmo->center + gizmo->ring_radius * (std::cos(end) * u + std::sin(end) * v);
+    }
+    const auto a = studio().viewport_point(from), b = studio().viewport_point(to);
+    if (!a || !b) fail("the gizmo is off screen");
+    drag_through(frontend_, segment(*a, *b, 10));
+  }
+
+  void drag_key(const std::vector<std::string>& args) {
+    if (args.size() < 3) fail("drag-key needs: translation|rotation INDEX TIME");
+    const bool translation = args[0] == "translation";
+    if (!translation && args[0] != "rotation") fail("drag-key: the row is translation or rotation");
+    const int index = static_cast<int>(number(args, 1, "key index"));
+    const double to = number(args, 2, "time");
+    const int part = studio().selected_part(), transition = studio().active_transition();
+    if (part < 0 || transition < 0) fail("drag-key needs a selected part and an open transition");
+    const auto& tracks = scene().transitions[transition].tracks;
+    const auto it = tracks.find(scene().parts[part].name);
+    const auto* track = it == tracks.end() ? nullptr : std::get_if<scene::KeyframedTrack>(&it->second);
+    if (!track) fail("the selected part has no keyframed track here");
+    const int count = static_cast<int>(translation ? track->translation.size() : track->rotation.size());
+    if (index < 0 || index >= count) fail(fmt::format("no key {} (the row has {})", index, count));
+    const double from = translation ? track->translation[index].time : track->rotation[index].time;
+    const float y = translation ? studio().layout().translation_row_y : studio().layout().rotation_row_y;
+    drag_through(frontend_, segment({studio().timeline_point(from).x, y}, {studio().timeline_point(to).x, y}, 8));
+  }
+
+  HeadlessFrontend& frontend_;
+  std::string label_;
+  int line_ = 0;
+  std::shared_ptr<const collision::CollisionSnapshot> snapshot_;
+};
+
+}  // namespace
+
+void run_script(HeadlessFrontend& frontend, const std::string& script_text, const std::string& label) {
+  Runner(frontend, label).run(script_text);
+}
+
+}  // namespace reconfig::studio

@@ -1,0 +1,117 @@
+// The state graph: states as nodes on a circle, transitions as arrows with a collision badge
+// (count of maximal intervals; grey while being detected). Clicking a badge or edge opens the
+// transition's timeline; clicking a state shows it.
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <map>
+
+#include "panel_window.h"
+#include "studio.h"
+
+namespace reconfig::studio {
+namespace {
+
+struct GraphGeometry {
+  std::vector<ImVec2> nodes;   ///< per state
+  std::vector<ImVec2> badges;  ///< per transition
+  float node_radius = 18;
+};
+
+GraphGeometry graph_geometry(const scene::Reconfigurable& scene, ImVec2 min, ImVec2 max) {
+  GraphGeometry geometry;
+  const int states = static_cast<int>(scene.states.size());
+  const ImVec2 center{(min.x + max.x) / 2, (min.y + max.y) / 2};
+  const float radius = std::max(std::min(max.x - min.x, max.y - min.y) / 2 - 34, 10.0f);
+  for (int s = 0; s < states; ++s) {
+    const double angle = states == 1 ? 0 : M_PI + 2 * M_PI * s / states;
+    geometry.nodes.push_back({center.x + (states == 1 ? 0 : radius * static_cast<float>(std::cos(angle))),
+                              center.y + (states == 1 ? 0 : radius * static_cast<float>(std::sin(angle)))});
+  }
+  // Transitions between the same two states fan out to either side of the straight line.
+  std::map<std::pair<int, int>, int> seen;
+  for (const scene::Transition& transition : scene.transitions) {
+    const int a = scene.find_state(transition.from), b = scene.find_state(transition.to);
+    const ImVec2 pa = geometry.nodes[a], pb = geometry.nodes[b];
+    const int k = seen[{std::min(a, b), std::max(a, b)}]++;
+    const float side = (k % 2 == 0 ? 1.0f : -1.0f) * static_cast<float>((k + 1) / 2) * 26.0f * (a < b ? 1 : -1);
+    const float dx = pb.x - pa.x, dy = pb.y - pa.y, length = std::max(std::sqrt(dx * dx + dy * dy), 1.0f);
+    geometry.badges.push_back({(pa.x + pb.x) / 2 - dy / length * side, (pa.y + pb.y) / 2 + dx / length * side});
+  }
+  return geometry;
+}
+
+}  // namespace
+
+std::optional<ImVec2> Studio::graph_edge_point(int transition) const {
+  if (!document_ || transition < 0 || transition >= static_cast<int>(document_->scene().transitions.size()))
+    return std::nullopt;
+  return graph_geometry(document_->scene(), layout_.graph_min, layout_.graph_max).badges[transition];
+}
+
+void Studio::draw_state_graph() {
+  const PanelRects rects = current_panel_rects();
+  begin_panel("State graph", rects.graph_pos, rects.graph_size);
+  if (!document_) {
+    ImGui::End();
+    return;
+  }
+  const scene::Reconfigurable& scene = document_->scene();
+  const ImVec2 min = ImGui::GetCursorScreenPos(), available = ImGui::GetContentRegionAvail();
+  const ImVec2 max{min.x + available.x, min.y + available.y};
+  layout_.graph_min = min;
+  layout_.graph_max = max;
+  const GraphGeometry geometry = graph_geometry(scene, min, max);
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  const auto snapshot = collisions();
+
+  for (int k = 0; k < static_cast<int>(scene.transitions.size()); ++k) {
+    const scene::Transition& transition = scene.transitions[k];
+    const ImVec2 a = geometry.nodes[scene.find_state(transition.from)], b = geometry.nodes[scene.find_state(transition.to)];
+    const ImVec2 m = geometry.badges[k];
+    const bool active = k == active_transition_;
+    const ImU32 color = active ? IM_COL32(30, 90, 220, 255) : IM_COL32(90, 90, 100, 255);
+    draw->AddBezierQuadratic(a, {2 * m.x - (a.x + b.x) / 2, 2 * m.y - (a.y + b.y) / 2}, b, color, active ? 3.0f : 1.5f);
+    // Collision badge.
+    const collision::TransitionSnapshot* current = nullptr;
+    if (snapshot)
+      for (const auto& t : snapshot->transitions)
+        if (t.transition == k) current = &t;
+    const bool known = current && current->up_to_date && snapshot->version == document_->version();
+    const std::size_t count = current ? current->intervals.size() : 0;
+    const ImU32 fill = !known ? IM_COL32(170, 170, 175, 255)
+                              : count > 0 ? IM_COL32(215, 40, 30, 255) : IM_COL32(60, 160, 80, 255);
+    draw->AddCircleFilled(m, 11, fill);
+    const std::string text = known ? fmt::format("{}", count) : "...";
+    const ImVec2 size = ImGui::CalcTextSize(text.c_str());
+    draw->AddText({m.x - size.x / 2, m.y - size.y / 2}, IM_COL32(255, 255, 255, 255), text.c_str());
+    draw->AddText({m.x + 14, m.y - size.y / 2}, color, transition.name.c_str());
+  }
+  for (int s = 0; s < static_cast<int>(scene.states.size()); ++s) {
+    const ImVec2 p = geometry.nodes[s];
+    const bool shown = active_transition_ < 0 && s == active_state_;
+    draw->AddCircleFilled(p, geometry.node_radius, shown ? IM_COL32(200, 220, 255, 255) : IM_COL32(250, 250, 252, 255));
+    draw->AddCircle(p, geometry.node_radius, IM_COL32(60, 60, 70, 255), 0, 2);
+    const ImVec2 size = ImGui::CalcTextSize(scene.states[s].name.c_str());
+    draw->AddText({p.x - size.x / 2, p.y + geometry.node_radius + 2}, IM_COL32(30, 30, 40, 255),
+                  scene.states[s].name.c_str());
+  }
+
+  ImGui::InvisibleButton("##graph", {std::max(available.x, 1.0f), std::max(available.y, 1.0f)});
+  if (ImGui::IsItemClicked()) {
+    const ImVec2 mouse = ImGui::GetIO().MousePos;
+    const auto near = [&](ImVec2 p, float r) { return std::hypot(mouse.x - p.x, mouse.y - p.y) <= r; };
+    for (int k = 0; k < static_cast<int>(geometry.badges.size()); ++k)
+      if (near(geometry.badges[k], 14)) open_transition(k);
+    for (int s = 0; s < static_cast<int>(geometry.nodes.size()); ++s)
+      if (near(geometry.nodes[s], geometry.node_radius)) {
+        active_transition_ = -1;
+        active_state_ = s;
+        selected_key_.reset();
+      }
+  }
+  ImGui::End();
+}
+
+}  // namespace reconfig::studio

@@ -1,0 +1,408 @@
+#include "studio.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <system_error>
+
+#include "keys.h"
+#include "panel_window.h"
+#include "reconfig/common/input_error.h"
+#include "reconfig/view/scene_bounds.h"
+
+namespace reconfig::studio {
+
+namespace fs = std::filesystem;
+
+Studio::Studio(StudioOptions options) : options_(std::move(options)), renderer_(render::RendererOptions{0}) {}
+
+bool Studio::open(const fs::path& file) {
+  try {
+    document_ = Document::open(file, options_.collisions);
+  } catch (const std::exception& error) {
+    set_status(fmt::format("cannot open {}: {}", file.string(), error.what()), true);
+    return false;
+  }
+  reset_view_for_new_document();
+  set_status(fmt::format("opened {}", file.string()));
+  if (Document::has_recovery(file)) recovery_candidate_ = fs::absolute(file);
+  return true;
+}
+
+bool Studio::save() {
+  if (!document_) return false;
+  return save_as(document_->file());
+}
+
+bool Studio::save_as(const fs::path& file) {
+  if (!document_) return false;
+  try {
+    document_->save_as(file);
+  } catch (const std::exception& error) {
+    set_status(fmt::format("not saved: {}", error.what()), true);
+    return false;
+  }
+  set_status(fmt::format("saved {}", document_->file().string()));
+  return true;
+}
+
+void Studio::reset_view_for_new_document() {
+  open_transitions_.clear();
+  active_transition_ = -1;
+  active_state_ = 0;
+  if (!document_->scene().transitions.empty()) open_transition(0);
+  time_ = 0;
+  playing_ = false;
+  selected_part_ = -1;
+  selected_key_.reset();
+  gizmo_drag_.reset();
+  drag_preview_.reset();
+  key_drag_.reset();
+  frame_pending_ = true;
+}
+
+void Studio::set_status(std::string message, bool error) {
+  status_ = std::move(message);
+  status_is_error_ = error;
+}
+
+std::shared_ptr<const collision::CollisionSnapshot> Studio::collisions() const {
+  return document_ ? document_->collisions().snapshot() : nullptr;
+}
+
+void Studio::request_close() {
+  if (document_ && document_->modified()) confirm_close_ = true;
+  else quit_ = true;
+}
+
+void Studio::frame(std::chrono::steady_clock::time_point now) {
+  const double dt = last_frame_ ? std::chrono::duration<double>(now - *last_frame_).count() : 0.0;
+  last_frame_ = now;
+  now_ = now;
+  seconds_ += dt;
+  if (playing_) advance_playback(dt);
+  handle_shortcuts();
+  draw_menu_bar();
+  draw_state_graph();
+  draw_inspector();
+  draw_viewport();
+  draw_timeline();
+  draw_status_bar();
+  draw_modals();
+  if (document_) {
+    std::string problem = document_->autosave_if_due(now, options_.autosave_interval);
+    if (!problem.empty()) set_status(std::move(problem), true);
+  }
+}
+
+void Studio::advance_playback(double seconds) {
+  if (active_transition_ < 0) {
+    playing_ = false;
+    return;
+  }
+  time_ = std::min(1.0, time_ + seconds * options_.play_speed);
+  if (time_ >= 1.0) playing_ = false;
+}
+
+void Studio::handle_shortcuts() {
+  const ImGuiIO& io = ImGui::GetIO();
+  if (io.WantTextInput) return;
+  const bool ctrl = io.KeyCtrl, shift = io.KeyShift;
+  if (ctrl && ImGui::IsKeyPressed(keys::kZ, false)) {
+    if (shift) redo();
+    else undo();
+  } else if (ctrl && ImGui::IsKeyPressed(keys::kS, false)) {
+    save();
+  } else if (!ctrl) {
+    if (ImGui::IsKeyPressed(keys::kSpace, false)) toggle_play();
+    if (ImGui::IsKeyPressed(keys::kLeft)) step(-1);
+    if (ImGui::IsKeyPressed(keys::kRight)) step(1);
+    if (ImGui::IsKeyPressed(keys::kI, false)) insert_key();
+    if (ImGui::IsKeyPressed(keys::kDelete, false)) delete_selected_key();
+    if (ImGui::IsKeyPressed(keys::kF, false)) frame_all();
+    if (ImGui::IsKeyPressed(keys::kEscape, false)) select_part(-1);
+  }
+}
+
+// ---- actions ---------------------------------------------------------------------------------
+
+void Studio::open_transition(int transition) {
+  if (!document_ || transition < 0 || transition >= static_cast<int>(document_->scene().transitions.size())) return;
+  if (std::find(open_transitions_.begin(), open_transitions_.end(), transition) == open_transitions_.end())
+    open_transitions_.push_back(transition);
+  if (active_transition_ != transition) selected_key_.reset();
+  active_transition_ = transition;
+}
+
+void Studio::close_transition(int transition) {
+  std::erase(open_transitions_, transition);
+  if (active_transition_ == transition) {
+    active_transition_ = open_transitions_.empty() ? -1 : open_transitions_.back();
+    selected_key_.reset();
+    if (active_transition_ < 0 && document_) {
+      // Keep showing the state the closed transition ended in.
+      const int state = document_->scene().find_state(document_->scene().transitions[transition].from);
+      active_state_ = std::max(state, 0);
+    }
+  }
+}
+
+void Studio::set_time(double t) { time_ = std::clamp(t, 0.0, 1.0); }
+
+void Studio::step(int frames) {
+  playing_ = false;
+  set_time(time_ + frames * options_.collisions.frame);
+}
+
+void Studio::toggle_play() {
+  if (active_transition_ < 0) return;
+  if (!playing_ && time_ >= 1.0) time_ = 0;
+  playing_ = !playing_;
+}
+
+void Studio::select_part(int part) {
+  if (!document_ || part >= static_cast<int>(document_->scene().parts.size())) part = -1;
+  if (part != selected_part_) selected_key_.reset();
+  selected_part_ = part;
+}
+
+std::optional<motion::Pose> Studio::selected_pose() const {
+  if (!document_ || selected_part_ < 0) return std::nullopt;
+  const scene::Reconfigurable& scene = document_->scene();
+  if (active_transition_ >= 0) return scene.pose_at(active_transition_, selected_part_, time_);
+  return scene.states[active_state_].pose_of(scene.parts[selected_part_].name);
+}
+
+bool Studio::execute(std::unique_ptr<scene::Command> command) {
+  if (!document_) return false;
+  const std::string label = command->label();
+  const std::string refusal = document_->execute(std::move(command));
+  if (!refusal.empty()) {
+    set_status(fmt::format("{}: refused — {}", label, refusal), true);
+    return false;
+  }
+  set_status(label);
+  return true;
+}
+
+bool Studio::apply_pose(const motion::Pose& pose) {
+  if (!document_ || selected_part_ < 0) return false;
+  const scene::Reconfigurable& scene = document_->scene();
+  const std::string& part = scene.parts[selected_part_].name;
+  if (active_transition_ < 0)
+    return execute(scene::set_state_pose(scene.states[active_state_].name, part, pose));
+  try {
+    return execute(scene::set_pose_at(scene, scene.transitions[active_transition_].name, part, time_, pose));
+  } catch (const InputError& error) {
+    set_status(error.what(), true);
+    return false;
+  }
+}
+
+bool Studio::insert_key() {
+  if (active_transition_ < 0 || time_ <= 0 || time_ >= 1) {
+    set_status("keys are inserted at an inner time of an open transition", true);
+    return false;
+  }
+  const auto pose = selected_pose();
+  if (!pose) {
+    set_status("select a part to key it", true);
+    return false;
+  }
+  return apply_pose(*pose);
+}
+
+namespace {
+
+const scene::KeyframedTrack* keyframed_track(const scene::Reconfigurable& scene, int transition, int part) {
+  if (transition < 0 || part < 0) return nullptr;
+  const auto& tracks = scene.transitions[transition].tracks;
+  const auto it = tracks.find(scene.parts[part].name);
+  return it == tracks.end() ? nullptr : std::get_if<scene::KeyframedTrack>(&it->second);
+}
+
+}  // namespace
+
+bool Studio::delete_selected_key() {
+  if (!document_ || !selected_key_ || active_transition_ < 0 || selected_part_ < 0) return false;
+  const scene::Reconfigurable& scene = document_->scene();
+  const bool done = execute(scene::remove_key(scene.transitions[active_transition_].name,
+                                              scene.parts[selected_part_].name, selected_key_->kind,
+                                              selected_key_->index));
+  if (done) selected_key_.reset();
+  return done;
+}
+
+bool Studio::move_key_time(KeyRef key, double t) {
+  if (!document_ || active_transition_ < 0 || selected_part_ < 0) return false;
+  const scene::Reconfigurable& scene = document_->scene();
+  const auto* track = keyframed_track(scene, active_transition_, selected_part_);
+  if (!track) return false;
+  const std::string& transition = scene.transitions[active_transition_].name;
+  const std::string& part = scene.parts[selected_part_].name;
+  if (key.kind == scene::KeyKind::kTranslation) {
+    if (key.index < 0 || key.index >= static_cast<int>(track->translation.size())) return false;
+    motion::TranslationKey value = track->translation[key.index];
+    value.time = t;
+    return execute(scene::set_translation_key(transition, part, key.index, value));
+  }
+  if (key.index < 0 || key.index >= static_cast<int>(track->rotation.size())) return false;
+  motion::RotationKey value = track->rotation[key.index];
+  value.time = t;
+  return execute(scene::set_rotation_key(transition, part, key.index, value));
+}
+
+bool Studio::undo() {
+  if (!document_) return false;
+  const std::string label = document_->undo_label();
+  if (!document_->undo()) {
+    set_status("nothing to undo");
+    return false;
+  }
+  selected_key_.reset();
+  set_status("undid " + label);
+  return true;
+}
+
+bool Studio::redo() {
+  if (!document_) return false;
+  const std::string label = document_->redo_label();
+  if (!document_->redo()) {
+    set_status("nothing to redo");
+    return false;
+  }
+  selected_key_.reset();
+  set_status("redid " + label);
+  return true;
+}
+
+void Studio::frame_all() {
+  if (!document_) return;
+  const scene::Reconfigurable& scene = document_->scene();
+  Eigen::AlignedBox3d box;
+  // The whole motion, not only the current instant, so nothing leaves the view when playing.
+  if (active_transition_ >= 0) {
+    for (int i = 0; i <= 8; ++i) box.extend(view::scene_bounds_at(scene, active_transition_, i / 8.0));
+  } else {
+    box = view::scene_bounds_in_state(scene, active_state_);
+  }
+  const ImVec2 size{layout_.viewport_max.x - layout_.viewport_min.x, layout_.viewport_max.y - layout_.viewport_min.y};
+  const double aspect = size.y > 0 ? size.x / size.y : 1.5;
+  camera_.frame_all(box, aspect);
+  frame_pending_ = false;
+}
+
+// ---- layout queries --------------------------------------------------------------------------
+
+ImVec2 Studio::timeline_point(double t) const {
+  return {static_cast<float>(layout_.scrub_min.x + t * (layout_.scrub_max.x - layout_.scrub_min.x)),
+          (layout_.scrub_min.y + layout_.scrub_max.y) / 2};
+}
+
+std::optional<ImVec2> Studio::viewport_point(const Eigen::Vector3d& world) const {
+  const int width = static_cast<int>(layout_.viewport_max.x - layout_.viewport_min.x);
+  const int height = static_cast<int>(layout_.viewport_max.y - layout_.viewport_min.y);
+  if (width <= 0 || height <= 0) return std::nullopt;
+  const auto projected = view::project_to_pixel(camera_, width, height, world);
+  if (!projected) return std::nullopt;
+  return ImVec2{layout_.viewport_min.x + static_cast<float>(projected->pixel.x()),
+                layout_.viewport_min.y + static_cast<float>(projected->pixel.y())};
+}
+
+// ---- status bar and dialogs -----------------------------------------------------------------
+
+void Studio::draw_status_bar() {
+  const ImGuiIO& io = ImGui::GetIO();
+  const float height = status_bar_height();
+  ImGui::SetNextWindowPos({0, io.DisplaySize.y - height});
+  ImGui::SetNextWindowSize({io.DisplaySize.x, height});
+  ImGui::Begin("##status", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
+                   ImGuiWindowFlags_NoBringToFrontOnFocus);
+  if (status_is_error_) ImGui::TextColored({0.8f, 0.1f, 0.1f, 1}, "%s", status_.c_str());
+  else ImGui::TextUnformatted(status_.c_str());
+  if (const auto snapshot = collisions()) {
+    std::string line;
+    const bool current = snapshot->complete && snapshot->version == document_->version();
+    if (!current) {
+      line = "collisions: detecting...";
+    } else {
+      std::size_t count = 0;
+      for (const auto& transition : snapshot->transitions) count += transition.intervals.size();
+      line = fmt::format("collisions: {} intervals in {} transitions, up to date", count,
+                         snapshot->transitions.size());
+    }
+    ImGui::SameLine(std::max(ImGui::GetWindowWidth() - ImGui::CalcTextSize(line.c_str()).x - 12, 300.0f));
+    ImGui::TextUnformatted(line.c_str());
+  }
+  ImGui::End();
+}
+
+void Studio::draw_modals() {
+  if (!recovery_candidate_.empty()) ImGui::OpenPopup("Recover unsaved work?");
+  if (ImGui::BeginPopupModal("Recover unsaved work?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    ImGui::Text("%s has an autosave newer than the file:\nthe studio closed before it was saved.",
+                recovery_candidate_.filename().string().c_str());
+    if (ImGui::Button("Recover")) {
+      try {
+        document_ = Document::recover(recovery_candidate_, options_.collisions);
+        reset_view_for_new_document();
+        set_status("recovered the autosave; save to keep it");
+      } catch (const std::exception& error) {
+        set_status(fmt::format("cannot recover: {}", error.what()), true);
+      }
+      recovery_candidate_.clear();
+      ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Discard")) {
+      std::error_code ignored;
+      fs::remove(Document::autosave_path(recovery_candidate_), ignored);
+      recovery_candidate_.clear();
+      ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndPopup();
+  }
+
+  const auto path_dialog = [&](const char* title, bool& show, std::string& path, auto&& accept) {
+    if (show) ImGui::OpenPopup(title);
+    show = false;
+    if (!ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+    char buffer[1024];
+    std::snprintf(buffer, sizeof buffer, "%s", path.c_str());
+    ImGui::SetNextItemWidth(480);
+    const bool entered = ImGui::InputText("##path", buffer, sizeof buffer, ImGuiInputTextFlags_EnterReturnsTrue);
+    path = buffer;
+    if (entered || ImGui::Button("OK")) {
+      accept(path);
+      ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel")) ImGui::CloseCurrentPopup();
+    ImGui::EndPopup();
+  };
+  path_dialog("Open scene", show_open_dialog_, open_path_input_, [&](const std::string& path) { open(path); });
+  path_dialog("Save scene as", show_save_as_dialog_, save_path_input_,
+              [&](const std::string& path) { save_as(path); });
+
+  if (confirm_close_) ImGui::OpenPopup("Save changes?");
+  confirm_close_ = false;
+  if (ImGui::BeginPopupModal("Save changes?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    ImGui::TextUnformatted("The design has unsaved changes.");
+    if (ImGui::Button("Save")) {
+      if (save()) quit_ = true;
+      ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Discard")) {
+      quit_ = true;
+      ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel")) ImGui::CloseCurrentPopup();
+    ImGui::EndPopup();
+  }
+}
+
+}  // namespace reconfig::studio

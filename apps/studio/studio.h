@@ -1,0 +1,181 @@
+#pragma once
+/// @file
+/// The studio's UI: one object that owns the open document and everything the panels share
+/// (open transitions, current time, selection, camera, drags), builds one ImGui frame at a
+/// time, and turns what the user does into scene commands. Panels live in their own files
+/// (viewport_panel.cpp, timeline_panel.cpp, state_graph_panel.cpp, inspector_panel.cpp,
+/// menu_bar.cpp); scripts and tests drive the same actions and read the same layout.
+
+#include <imgui.h>
+
+#include <Eigen/Core>
+#include <chrono>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "document.h"
+#include "gizmo.h"
+#include "reconfig/render/render_target.h"
+#include "reconfig/render/renderer.h"
+#include "reconfig/scene/edits.h"
+#include "reconfig/view/camera.h"
+
+namespace reconfig::studio {
+
+/// A key of the selected part's track on the timeline.
+struct KeyRef {
+  scene::KeyKind kind = scene::KeyKind::kTranslation;
+  int index = 0;
+  bool operator==(const KeyRef&) const = default;
+};
+
+/// Where things are on screen this frame (pixels, ImGui's coordinates: origin top-left).
+struct Layout {
+  ImVec2 viewport_min{0, 0}, viewport_max{0, 0};  ///< the 3D image
+  ImVec2 scrub_min{0, 0}, scrub_max{0, 0};        ///< the timeline's time strip
+  ImVec2 graph_min{0, 0}, graph_max{0, 0};        ///< the state graph canvas
+  float translation_row_y = 0, rotation_row_y = 0;  ///< key rows' centers
+  float bands_row_y = 0;                             ///< collision bands' center
+};
+
+struct StudioOptions {
+  std::chrono::milliseconds autosave_interval{3000};
+  double play_speed = 0.25;  ///< transition time per second while playing
+  collision::CollisionServiceOptions collisions;
+};
+
+class Studio {
+ public:
+  /// Needs the GL context current (the renderer and viewport image live in it).
+  explicit Studio(StudioOptions options = {});
+
+  // ---- documents -------------------------------------------------------------------------
+  /// Opens a scene; on a bad file shows the error (and keeps what was open). If the file has
+  /// an autosave newer than itself, asks whether to recover it.
+  bool open(const std::filesystem::path& file);
+  /// Saves atomically; reports failures in the status line. @return success
+  bool save();
+  bool save_as(const std::filesystem::path& file);
+  Document* document() { return document_.get(); }
+  const Document* document() const { return document_.get(); }
+
+  // ---- one frame -------------------------------------------------------------------------
+  /// Builds the whole UI for one frame (call between ImGui::NewFrame and ImGui::Render) and
+  /// draws the 3D viewport into its image. `now` drives playback, pulsing boxes and autosave.
+  void frame(std::chrono::steady_clock::time_point now);
+  /// True once the user chose File > Quit (or confirmed closing the window).
+  bool quit_requested() const { return quit_; }
+  /// The window's close button: quits at once when nothing is unsaved, else asks.
+  void request_close();
+
+  // ---- actions (what clicks and keys do; scripts call them too) --------------------------
+  void open_transition(int transition);
+  void close_transition(int transition);
+  void set_time(double t);
+  void step(int frames);
+  void toggle_play();
+  void select_part(int part);
+  /// Places the selected part at `pose` at the current time (a keyframe, or the state pose
+  /// at t = 0 / 1). @return success (the refusal goes to the status line)
+  bool apply_pose(const motion::Pose& pose);
+  /// Inserts translation and rotation keys for the selected part at the current time.
+  bool insert_key();
+  /// Removes the selected inner key.
+  bool delete_selected_key();
+  /// Moves key `key` of the selected part to time `t` (kept between its neighbours).
+  bool move_key_time(KeyRef key, double t);
+  bool undo();
+  bool redo();
+  void frame_all();
+  /// Executes a scene command as one undoable step; refusals go to the status line.
+  bool execute(std::unique_ptr<scene::Command> command);
+
+  // ---- what the UI shows (for tests and scripts) ----------------------------------------
+  int active_transition() const { return active_transition_; }
+  const std::vector<int>& open_transitions() const { return open_transitions_; }
+  double time() const { return time_; }
+  bool playing() const { return playing_; }
+  int selected_part() const { return selected_part_; }
+  std::optional<KeyRef> selected_key() const { return selected_key_; }
+  const std::string& status() const { return status_; }
+  const Layout& layout() const { return layout_; }
+  view::Camera& camera() { return camera_; }
+  /// The collision picture the UI shows this frame (null before a document is open).
+  std::shared_ptr<const collision::CollisionSnapshot> collisions() const;
+  /// The selected part's pose at the current time.
+  std::optional<motion::Pose> selected_pose() const;
+  /// The gizmo as drawn this frame (for the selected part), if any.
+  std::optional<Gizmo> gizmo() const { return gizmo_; }
+  /// Screen position of time t on the scrub strip.
+  ImVec2 timeline_point(double t) const;
+  /// Screen position of the badge of transition `transition` in the state graph.
+  std::optional<ImVec2> graph_edge_point(int transition) const;
+  /// Screen position where a point of the world appears in the viewport image.
+  std::optional<ImVec2> viewport_point(const Eigen::Vector3d& world) const;
+  /// Ghosts of moving parts around the current time.
+  bool show_ghosts = false;
+  int ghost_count = 3;
+  float ghost_spacing = 0.08f;
+  bool show_intervals = true;
+
+ private:
+  // Panels.
+  void draw_menu_bar();
+  void draw_state_graph();
+  void draw_inspector();
+  void draw_viewport();
+  void draw_timeline();
+  void draw_status_bar();
+  void draw_modals();
+  void handle_shortcuts();
+
+  // Viewport helpers.
+  void render_viewport_image(int width, int height);
+  void handle_viewport_mouse(const ImVec2& origin, int width, int height);
+  void draw_gizmo(ImDrawList* draw, const ImVec2& origin, int width, int height);
+  view::Ray mouse_ray(const ImVec2& origin, int width, int height) const;
+  int pick_part(const view::Ray& ray) const;
+
+  void reset_view_for_new_document();
+  void advance_playback(double seconds);
+  void set_status(std::string message, bool error = false);
+
+  StudioOptions options_;
+  std::unique_ptr<Document> document_;
+  render::Renderer renderer_;
+  render::RenderTarget viewport_image_;
+  view::Camera camera_;
+  bool frame_pending_ = true;
+
+  std::vector<int> open_transitions_;
+  int active_transition_ = -1;
+  int active_state_ = 0;  ///< shown when no transition is open
+  double time_ = 0;
+  bool playing_ = false;
+  int selected_part_ = -1;
+  std::optional<KeyRef> selected_key_;
+
+  // Interactions in progress.
+  std::optional<GizmoDrag> gizmo_drag_;
+  std::optional<motion::Pose> drag_preview_;
+  std::optional<Gizmo> gizmo_;
+  std::optional<KeyRef> key_drag_;
+  double key_drag_time_ = 0;
+  bool viewport_dragging_ = false;
+
+  std::optional<std::chrono::steady_clock::time_point> last_frame_;
+  std::chrono::steady_clock::time_point now_{};
+  double seconds_ = 0;
+  Layout layout_;
+  std::string status_;
+  bool status_is_error_ = false;
+  std::filesystem::path recovery_candidate_;
+  std::string open_path_input_, save_path_input_;
+  bool show_open_dialog_ = false, show_save_as_dialog_ = false, confirm_close_ = false;
+  bool quit_ = false;
+};
+
+}  // namespace reconfig::studio

@@ -1,0 +1,201 @@
+// The 3D viewport: the scene at the current time, collision boxes, ghosts, the selected part's
+// path and the move/rotate gizmo; orbit, pan, zoom, click to select, drag the gizmo to edit.
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "panel_window.h"
+#include "reconfig/render/scene_draw_list.h"
+#include "reconfig/view/ghost_sampling.h"
+#include "reconfig/view/picking.h"
+#include "studio.h"
+
+namespace reconfig::studio {
+namespace {
+
+ImU32 handle_color(GizmoHandle handle, bool hot) {
+  if (hot) return IM_COL32(250, 200, 30, 255);
+  const Eigen::Vector3d axis = handle_axis(handle);
+  return IM_COL32(static_cast<int>(40 + 190 * axis.x()), static_cast<int>(40 + 150 * axis.y()),
+                  static_cast<int>(40 + 200 * axis.z()), 255);
+}
+
+}  // namespace
+
+void Studio::draw_viewport() {
+  const PanelRects rects = current_panel_rects();
+  begin_panel("Viewport", rects.viewport_pos, rects.viewport_size, false);
+  const ImVec2 origin = ImGui::GetCursorScreenPos();
+  const ImVec2 available = ImGui::GetContentRegionAvail();
+  const int width = std::max(static_cast<int>(available.x), 1), height = std::max(static_cast<int>(available.y), 1);
+  layout_.viewport_min = origin;
+  layout_.viewport_max = {origin.x + width, origin.y + height};
+  if (document_ && frame_pending_) frame_all();
+
+  render_viewport_image(width, height);
+  // The image's rows are bottom-up (GL): flip it with the texture coordinates.
+  ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(viewport_image_.texture())),
+               {static_cast<float>(width), static_cast<float>(height)}, {0, 1}, {1, 0});
+  ImGui::SetCursorScreenPos(origin);
+  ImGui::InvisibleButton("##viewport", {static_cast<float>(width), static_cast<float>(height)},
+                         ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
+                             ImGuiButtonFlags_MouseButtonMiddle);
+  if (document_) {
+    handle_viewport_mouse(origin, width, height);
+    draw_gizmo(ImGui::GetWindowDrawList(), origin, width, height);
+    const scene::Reconfigurable& scene = document_->scene();
+    const std::string caption = active_transition_ >= 0
+                                    ? fmt::format("{}   t = {:.3f}", scene.transitions[active_transition_].name, time_)
+                                    : fmt::format("state {}", scene.states[active_state_].name);
+    ImGui::GetWindowDrawList()->AddText({origin.x + 10, origin.y + 8}, IM_COL32(40, 40, 50, 255), caption.c_str());
+  } else {
+    ImGui::GetWindowDrawList()->AddText({origin.x + 20, origin.y + 20}, IM_COL32(60, 60, 70, 255),
+                                        "No design open: File > Open (Ctrl-O) or reconfig-studio SCENE.json");
+  }
+  ImGui::End();
+}
+
+void Studio::render_viewport_image(int width, int height) {
+  viewport_image_.resize(width, height);
+  viewport_image_.bind();
+  render::DrawList list;
+  if (document_) {
+    const scene::Reconfigurable& scene = document_->scene();
+    render::SceneDrawRequest request;
+    request.transition = active_transition_;
+    request.time = time_;
+    request.state = active_state_;
+    if (selected_part_ >= 0) request.selected = {selected_part_};
+    if (drag_preview_ && selected_part_ >= 0) request.pose_overrides = {{selected_part_, *drag_preview_}};
+    if (active_transition_ >= 0) {
+      if (show_ghosts) {
+        view::GhostRequest ghosts;
+        ghosts.current = time_;
+        ghosts.count = ghost_count;
+        ghosts.spacing = ghost_spacing;
+        request.ghosts = view::ghost_samples(ghosts);
+      }
+      // Boxes of the short (one-frame) intervals that overlap the current time.
+      if (const auto snapshot = collisions(); snapshot && show_intervals)
+        for (const auto& transition : snapshot->transitions)
+          if (transition.transition == active_transition_)
+            for (const auto& interval : transition.frames)
+              if (interval.t0 <= time_ + 1e-9 && time_ <= interval.t1 + 1e-9) request.boxes.push_back(interval.box);
+    }
+    list = render::scene_draw_list(scene, request);
+    list.seconds = seconds_;
+    // The selected part's path: where its pivot goes over the transition.
+    if (active_transition_ >= 0 && selected_part_ >= 0) {
+      render::LineItem path;
+      path.color = {0.15f, 0.35f, 0.85f, 1.0f};
+      const Eigen::Vector3d pivot = scene.parts[selected_part_].center;
+      for (int i = 0; i <= 120; ++i)
+        path.points.push_back(scene.pose_at(active_transition_, selected_part_, i / 120.0).translation + pivot);
+      list.lines.push_back(std::move(path));
+    }
+  }
+  renderer_.draw(list, camera_, width, height);
+  render::RenderTarget::unbind();
+}
+
+view::Ray Studio::mouse_ray(const ImVec2& origin, int width, int height) const {
+  const ImVec2 mouse = ImGui::GetIO().MousePos;
+  return view::ray_from_pixel(camera_, width, height, mouse.x - origin.x, mouse.y - origin.y);
+}
+
+int Studio::pick_part(const view::Ray& ray) const {
+  const scene::Reconfigurable& scene = document_->scene();
+  int best = -1;
+  double best_s = INFINITY;
+  for (int part = 0; part < static_cast<int>(scene.parts.size()); ++part) {
+    const Eigen::MatrixX3d V = active_transition_ >= 0 ? scene.posed_vertices(active_transition_, part, time_)
+                                                       : scene.posed_vertices_in_state(active_state_, part);
+    const auto hit = view::ray_mesh(ray, V, scene.parts[part].mesh.F);
+    if (hit && hit->s < best_s) {
+      best_s = hit->s;
+      best = part;
+    }
+  }
+  return best;
+}
+
+void Studio::handle_viewport_mouse(const ImVec2& origin, int width, int height) {
+  const ImGuiIO& io = ImGui::GetIO();
+  const bool hovered = ImGui::IsItemHovered();
+  const view::Ray ray = mouse_ray(origin, width, height);
+  const Eigen::Vector2d mouse(io.MousePos.x - origin.x, io.MousePos.y - origin.y);
+
+  if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
+    const GizmoHandle handle = gizmo_ ? gizmo_->hit(camera_, width, height, mouse) : GizmoHandle::kNone;
+    if (handle != GizmoHandle::kNone && selected_pose()) {
+      gizmo_drag_ = GizmoDrag{handle, gizmo_->center, *selected_pose(), ray};
+    } else {
+      viewport_dragging_ = true;
+    }
+  }
+  if (gizmo_drag_) {
+    if (ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
+      drag_preview_ = gizmo_drag_->pose_for(ray);
+    } else {
+      const motion::Pose pose = gizmo_drag_->pose_for(ray);
+      gizmo_drag_.reset();
+      drag_preview_.reset();
+      if (io.MouseDragMaxDistanceSqr[0] > 4) apply_pose(pose);  // a click on a handle changes nothing
+    }
+    return;
+  }
+  if (viewport_dragging_) {
+    const double world_per_pixel = 2 * camera_.distance * std::tan(camera_.fov_y / 2) / height;
+    if (ImGui::IsMouseDragging(ImGuiMouseButton_Left, 2)) {
+      if (io.KeyShift) camera_.pan(-io.MouseDelta.x * world_per_pixel, io.MouseDelta.y * world_per_pixel);
+      else camera_.orbit(-io.MouseDelta.x * 0.008, io.MouseDelta.y * 0.008);
+    }
+    if (ImGui::IsMouseReleased(ImGuiMouseButton_Left)) {
+      viewport_dragging_ = false;
+      if (io.MouseDragMaxDistanceSqr[0] <= 9) select_part(pick_part(ray));
+    }
+  }
+  if (ImGui::IsItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Right, 2))
+    camera_.orbit(-io.MouseDelta.x * 0.008, io.MouseDelta.y * 0.008);
+  if (ImGui::IsItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Middle, 2)) {
+    const double world_per_pixel = 2 * camera_.distance * std::tan(camera_.fov_y / 2) / height;
+    camera_.pan(-io.MouseDelta.x * world_per_pixel, io.MouseDelta.y * world_per_pixel);
+  }
+  if (hovered && io.MouseWheel != 0) camera_.zoom(std::pow(0.88, io.MouseWheel));
+}
+
+void Studio::draw_gizmo(ImDrawList* draw, const ImVec2& origin, int width, int height) {
+  gizmo_.reset();
+  const std::optional<motion::Pose> pose = drag_preview_ ? drag_preview_ : selected_pose();
+  if (!pose) return;
+  const Eigen::Vector3d pivot = document_->scene().parts[selected_part_].center + pose->translation;
+  gizmo_ = Gizmo::sized_for(camera_, height, gizmo_drag_ ? gizmo_drag_->center : pivot);
+  const ImGuiIO& io = ImGui::GetIO();
+  const GizmoHandle hovered =
+      gizmo_drag_ ? gizmo_drag_->handle
+                  : gizmo_->hit(camera_, width, height, {io.MousePos.x - origin.x, io.MousePos.y - origin.y});
+  for (const GizmoHandle handle : {GizmoHandle::kRotateX, GizmoHandle::kRotateY, GizmoHandle::kRotateZ,
+                                   GizmoHandle::kMoveX, GizmoHandle::kMoveY, GizmoHandle::kMoveZ}) {
+    std::vector<ImVec2> points;
+    for (const Eigen::Vector3d& point : gizmo_->shape(handle))
+      if (const auto projected = view::project_to_pixel(camera_, width, height, point))
+        points.push_back({origin.x + static_cast<float>(projected->pixel.x()),
+                          origin.y + static_cast<float>(projected->pixel.y())});
+    if (points.size() < 2) continue;
+    const ImU32 color = handle_color(handle, handle == hovered);
+    draw->AddPolyline(points.data(), static_cast<int>(points.size()), color, 0, is_rotation(handle) ? 2.0f : 3.0f);
+    if (!is_rotation(handle)) {
+      // Arrow head: a triangle at the tip, pointing along the projected axis.
+      const ImVec2 a = points.front(), b = points.back();
+      const float dx = b.x - a.x, dy = b.y - a.y, length = std::sqrt(dx * dx + dy * dy);
+      if (length > 1) {
+        const float ux = dx / length, uy = dy / length;
+        draw->AddTriangleFilled({b.x + 10 * ux, b.y + 10 * uy}, {b.x - 5 * uy, b.y + 5 * ux},
+                                {b.x + 5 * uy, b.y - 5 * ux}, color);
+      }
+    }
+  }
+}
+
+}  // namespace reconfig::studio
