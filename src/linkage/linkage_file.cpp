@@ -176,6 +176,12 @@ void check_not_over_constrained(const SymbolicKinematics& kinematics) {
 
 Linkage parse_linkage(const std::string& text, const std::string& file) { return Parser{file}.parse(text); }
 
+void check_linkage(const Linkage& linkage) {
+  const JointOrder order = order_joints(linkage);
+  const SymbolicKinematics kinematics(linkage, order);  // checks the initial configuration
+  check_not_over_constrained(kinematics);
+}
+
 Linkage read_linkage(const std::filesystem::path& path) {
   std::ifstream in(path);
   if (!in) throw InputError(path.string(), "", "cannot open the file");
@@ -183,9 +189,7 @@ Linkage read_linkage(const std::filesystem::path& path) {
   buffer << in.rdbuf();
   Linkage linkage = parse_linkage(buffer.str(), path.string());
   try {
-    const JointOrder order = order_joints(linkage);
-    const SymbolicKinematics kinematics(linkage, order);  // checks the initial configuration
-    check_not_over_constrained(kinematics);
+    check_linkage(linkage);
   } catch (const InputError& error) {
     throw error.in_file(path.string());
   }

@@ -13,6 +13,8 @@
 #include "reconfig/geometry/load_mesh.h"
 #include "reconfig/geometry/mesh_check.h"
 #include "reconfig/geometry/save_mesh.h"
+#include "reconfig/linkage/linkage_file.h"
+#include "reconfig/scene/linkage_drive.h"
 #include "reconfig/scene/validate_scene.h"
 #include "scene/detail/json_cursor.h"
 
@@ -159,8 +161,66 @@ Track read_track(const JsonCursor& c) {
   return track;
 }
 
-Transition read_transition(const JsonCursor& c) {
-  c.expect_object({"name", "from", "to", "bidirectional", "tracks"});
+/// A pose written as a plain rigid map `q = R p + x` (the drive's plane and offsets).
+motion::Pose read_placement(const JsonCursor& c) { return read_pose(c); }
+
+linkage::Linkage read_drive_linkage(const JsonCursor& c, const fs::path& base_dir, LinkageDrive& drive) {
+  if (c.has("file") == c.has("inline")) c.fail("a linkage drive needs exactly one of \"file\", \"inline\"");
+  if (c.has("file")) {
+    const JsonCursor file = c["file"];
+    const std::string relative = file.as_string();
+    const fs::path path = (base_dir / relative).lexically_normal();
+    drive.file = path;
+    if (!fs::exists(path)) file.fail(fmt::format("linkage file \"{}\" not found", relative));
+    try {
+      return linkage::read_linkage(path);
+    } catch (const InputError& error) {
+      file.fail(error.in_file(relative).what());
+    }
+  }
+  const JsonCursor inline_linkage = c["inline"];
+  if (!inline_linkage.value().is_object()) inline_linkage.fail("expected a linkage object (\"reconfig-linkage\")");
+  try {
+    linkage::Linkage result = linkage::parse_linkage(inline_linkage.value().dump());
+    linkage::check_linkage(result);
+    return result;
+  } catch (const InputError& error) {
+    throw InputError("", error.location().empty() ? inline_linkage.path() : inline_linkage.path() + "." + error.location(),
+                     error.message());
+  }
+}
+
+LinkageDrive read_drive(const JsonCursor& c, const fs::path& base_dir) {
+  c.expect_object({"file", "inline", "plane", "scale", "motor", "tolerance", "attach"});
+  LinkageDrive drive;
+  drive.linkage = read_drive_linkage(c, base_dir, drive);
+  if (c.has("plane")) drive.plane = read_placement(c["plane"]);
+  if (c.has("scale")) drive.scale = c["scale"].as_positive();
+  const JsonCursor motor = c["motor"];
+  motor.expect_object({"from", "to"});
+  drive.from = motor["from"].as_number();
+  drive.to = motor["to"].as_number();
+  if (c.has("tolerance")) drive.tolerance = c["tolerance"].as_positive();
+  const JsonCursor attach = c["attach"];
+  const std::size_t n = attach.expect_array();
+  if (n == 0) attach.fail("attach at least one part to a link");
+  for (std::size_t k = 0; k < n; ++k) {
+    const JsonCursor a = attach[k];
+    a.expect_object({"part", "link", "offset"});
+    LinkageAttachment attachment;
+    attachment.part = a["part"].as_name();
+    const JsonCursor link = a["link"];
+    link.expect_array(2);
+    attachment.origin = link[0].as_name();
+    attachment.toward = link[1].as_name();
+    if (a.has("offset")) attachment.offset = read_placement(a["offset"]);
+    drive.attach.push_back(std::move(attachment));
+  }
+  return drive;
+}
+
+Transition read_transition(const JsonCursor& c, const fs::path& base_dir) {
+  c.expect_object({"name", "from", "to", "bidirectional", "tracks", "linkage"});
   Transition transition;
   transition.name = c["name"].as_name();
   transition.from = c["from"].as_name();
@@ -172,6 +232,7 @@ Transition read_transition(const JsonCursor& c) {
     for (const auto& item : tracks.value().items())
       transition.tracks.emplace(item.key(), read_track(tracks[item.key()]));
   }
+  if (c.has("linkage")) transition.linkage = read_drive(c["linkage"], base_dir);
   return transition;
 }
 
@@ -192,8 +253,9 @@ Reconfigurable read_scene(const JsonCursor& root, const fs::path& base_dir) {
   if (root.has("transitions")) {
     const JsonCursor transitions = root["transitions"];
     for (std::size_t i = 0, n = transitions.expect_array(); i < n; ++i)
-      scene.transitions.push_back(read_transition(transitions[i]));
+      scene.transitions.push_back(read_transition(transitions[i], base_dir));
   }
+  compile_linkage_drives(scene);
   validate_scene(scene);
   return scene;
 }
@@ -254,6 +316,23 @@ ordered_json track_json(const Track& track) {
   return j;
 }
 
+ordered_json drive_json(const LinkageDrive& drive, const fs::path& base_dir) {
+  ordered_json j;
+  if (drive.file)
+    j["file"] = drive.file->lexically_proximate(base_dir).generic_string();
+  else
+    j["inline"] = ordered_json::parse(linkage::linkage_to_json(drive.linkage));
+  j["plane"] = pose_json(drive.plane);
+  j["scale"] = drive.scale;
+  j["motor"] = {{"from", drive.from}, {"to", drive.to}};
+  j["tolerance"] = drive.tolerance;
+  ordered_json attach = ordered_json::array();
+  for (const LinkageAttachment& a : drive.attach)
+    attach.push_back({{"part", a.part}, {"link", ordered_json::array({a.origin, a.toward})},
+                      {"offset", pose_json(a.offset)}});
+  j["attach"] = attach;
+  return j;
+}
 
 }  // namespace
 
@@ -299,12 +378,15 @@ std::string scene_to_json(const Reconfigurable& scene, const fs::path& base_dir)
   root["transitions"] = ordered_json::array();
   for (const Transition& transition : scene.transitions) {
     ordered_json tracks = ordered_json::object();
-    for (const auto& [name, track] : transition.tracks) tracks[name] = track_json(track);
-    root["transitions"].push_back({{"name", transition.name},
-                                   {"from", transition.from},
-                                   {"to", transition.to},
-                                   {"bidirectional", transition.bidirectional},
-                                   {"tracks", tracks}});
+    for (const auto& [name, track] : transition.tracks)
+      if (!transition.linkage || !transition.linkage->drives(name)) tracks[name] = track_json(track);
+    ordered_json entry = {{"name", transition.name},
+                          {"from", transition.from},
+                          {"to", transition.to},
+                          {"bidirectional", transition.bidirectional},
+                          {"tracks", tracks}};
+    if (transition.linkage) entry["linkage"] = drive_json(*transition.linkage, base_dir);
+    root["transitions"].push_back(entry);
   }
   return root.dump(2) + "\n";
 }

@@ -162,6 +162,17 @@ void validate_scene(const Reconfigurable& scene, const PoseTolerance& tolerance)
     const int to = scene.find_state(transition.to);
     if (from < 0) fail(path + ".from", fmt::format("unknown state \"{}\"", transition.from));
     if (to < 0) fail(path + ".to", fmt::format("unknown state \"{}\"", transition.to));
+    if (transition.linkage) {
+      for (std::size_t k = 0; k < transition.linkage->attach.size(); ++k) {
+        const std::string& name = transition.linkage->attach[k].part;
+        if (scene.find_part(name) < 0)
+          fail(fmt::format("{}.linkage.attach[{}].part", path, k), fmt::format("unknown part \"{}\"", name));
+      }
+      if (const std::string part = edited_driven_part(transition); !part.empty())
+        fail(fmt::format("{}.tracks.{}", path, part),
+             fmt::format("part \"{}\" is driven by the linkage of transition \"{}\": edit the drive (and compile "
+                         "it again), not the part's track", part, transition.name));
+    }
     for (const auto& [name, track] : transition.tracks)
       if (scene.find_part(name) < 0) fail(fmt::format("{}.tracks.{}", path, name), fmt::format("unknown part \"{}\"", name));
     for (const Part& part : scene.parts) {

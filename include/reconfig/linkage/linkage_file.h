@@ -27,6 +27,12 @@ Linkage parse_linkage(const std::string& text, const std::string& file = "");
 /// @throws reconfig::InputError naming the file and the JSON path
 Linkage read_linkage(const std::filesystem::path& path);
 
+/// The checks read_linkage adds to parse_linkage: fully constrained (order_joints), not
+/// singular in the initial configuration, not over-constrained. For linkages that come from
+/// elsewhere (e.g. inline in a scene file).
+/// @throws reconfig::InputError (without a file) naming the JSON path or the joints
+void check_linkage(const Linkage& linkage);
+
 /// The linkage as "reconfig-linkage" version 1 JSON text (pretty-printed). Round-trips
 /// through parse_linkage exactly (positions are printed with 17 significant digits).
 std::string linkage_to_json(const Linkage& linkage);

@@ -3,8 +3,10 @@
 /// A transition between two states: an edge of the state graph, choreographed on [0, 1].
 
 #include <map>
+#include <optional>
 #include <string>
 
+#include "reconfig/scene/linkage_drive.h"
 #include "reconfig/scene/track.h"
 
 namespace reconfig::scene {
@@ -16,6 +18,9 @@ struct Transition {
   /// Motion of each animated part by part name. A part without a track holds its pose (and
   /// has the same pose in both states).
   std::map<std::string, Track> tracks;
+  /// A planar linkage that drives some parts (linkage_drive.h); their tracks in `tracks` are
+  /// compiled from it (compile_linkage_drive) and saving writes the drive instead of them.
+  std::optional<LinkageDrive> linkage;
 };
 
 }  // namespace reconfig::scene
