@@ -1,32 +1,61 @@
-// Spacetime collision engine vs the reference check, on real meshes (CGAL demo data).
+// Spacetime collision engine vs the reference check and FCL 0.7, on real meshes (CGAL demo data)
+// and on the many-part kitchen example, from 1 K to 1 M triangles.
 //
 //   build/bin/bench_collision [--benchmark_filter=...]
+//   reconfig bench collision [--filter ...] [--json]     (the same, with a summary table)
 //
-// Scenes: a CGAL mesh held still and another one sweeping through it along a curved path while
-// turning 90° (both scaled to about 1 m), so they collide midway. Measured: full detection at
-// 1 mm tolerance (28-DOP, and 8/80-DOP for comparison), the update after moving one keyframe,
-// and the reference check at the same time resolution as the engine's proxies.
+// Scenes (the `scene:N` argument of every benchmark):
+//   0  elephant through elephant        11 K triangles   CGAL mesh held still, another one
+//   1  bunny through armadillo         127 K triangles   sweeping through it along a curved
+//   2  eight through eight             1.3 K triangles   path while turning 90° (1 m boxes)
+//   3  kitchen, transition open_hasty  1.2 K triangles, 22 parts (examples/kitchen; collides)
+//   4  kitchen, transition open        1.2 K triangles, 22 parts (collision-free)
+//   5  gallery                         1.07 M triangles: 16 still statues (8 bunnies, 8
+//      armadillos) in two rows and a small armadillo walking down the corridor between them,
+//      swerving into one statue midway. Slow (minutes); run it alone with
+//      --benchmark_filter='scene:5'.
+// Measured for each: full detection at 1 mm tolerance with the 28-, 8- and 80-DOP families,
+// the update after moving one translation key, the reference check and FCL 0.7 (if found at
+// configure time) at the same time resolution as the engine's proxies: the number of distinct
+// sample times of all parts' proxies (28-DOP, 1 mm). FCL gets the engine's exact sample times,
+// the reference check (evenly spaced samples only) the same number of them.
 
 #include <benchmark/benchmark.h>
+#include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <map>
+#include <memory>
+#include <mutex>
+#include <set>
 
 #include "reconfig/collision/reference_check.h"
 #include "reconfig/collision/spacetime_detector.h"
+#include "reconfig/collision/spacetime_proxy.h"
 #include "reconfig/geometry/load_mesh.h"
 #include "reconfig/scene/edits.h"
 #include "reconfig/scene/history.h"
 #include "reconfig/scene/part.h"
+#include "reconfig/scene/scene_file.h"
+
+#ifdef RECONFIG_HAVE_FCL
+#include <fcl/broadphase/broadphase_dynamic_AABB_tree.h>
+#include <fcl/geometry/bvh/BVH_model.h>
+#include <fcl/narrowphase/collision.h>
+#endif
 
 namespace {
 
 using namespace reconfig;
 namespace fs = std::filesystem;
 
-/// `data/meshes/<name>` of the CGAL demo data, extracted once next to the binary.
-geometry::Mesh cgal_mesh(const std::string& name) {
+enum SceneId : int { kElephant, kBunnyArmadillo, kEight, kKitchenHasty, kKitchen, kGallery };
+
+/// `data/meshes/<name>` of the CGAL demo data, extracted once to the temporary folder, scaled
+/// so that its bounding box is `size` wide at most, centered at the origin.
+geometry::Mesh cgal_mesh(const std::string& name, double size = 1.0) {
   const fs::path root = fs::temp_directory_path() / "reconfig-bench-data";
   const fs::path file = root / "data" / "meshes" / name;
   if (!fs::exists(file)) {
@@ -35,9 +64,8 @@ geometry::Mesh cgal_mesh(const std::string& name) {
     if (std::system(command.c_str()) != 0) throw std::runtime_error("cannot extract " + name + " (libcgal-demo)");
   }
   geometry::Mesh mesh = geometry::load_mesh(file);
-  // Scale to a 1 m bounding box centered at the origin.
   const Eigen::RowVector3d lo = mesh.V.colwise().minCoeff(), hi = mesh.V.colwise().maxCoeff();
-  mesh.V = ((mesh.V.rowwise() - (lo + hi) / 2) / (hi - lo).maxCoeff()).eval();
+  mesh.V = ((mesh.V.rowwise() - (lo + hi) / 2) * (size / (hi - lo).maxCoeff())).eval();
   return mesh;
 }
 
@@ -48,6 +76,26 @@ scene::Part make_part(const std::string& name, geometry::Mesh mesh) {
   part.mesh = std::move(mesh);
   part.center = scene::part_center(part.mesh);
   return part;
+}
+
+/// Straight-line Bézier handles at the thirds of the chords (constant speed along each chord).
+std::vector<motion::TranslationKey> polyline_keys(const std::vector<std::pair<double, Eigen::Vector3d>>& points) {
+  std::vector<motion::TranslationKey> keys;
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const Eigen::Vector3d p = points[k].second;
+    const Eigen::Vector3d prev = k > 0 ? points[k - 1].second : p, next = k + 1 < points.size() ? points[k + 1].second : p;
+    keys.push_back({points[k].first, p, p + (prev - p) / 3, p + (next - p) / 3});
+  }
+  return keys;
+}
+
+scene::Transition one_track_transition(const std::string& name, const std::string& part, scene::KeyframedTrack track) {
+  scene::Transition transition;
+  transition.name = name;
+  transition.from = "start";
+  transition.to = "end";
+  transition.tracks.emplace(part, std::move(track));
+  return transition;
 }
 
 /// `still` rests at the origin; `moving` sweeps from x = −1.3 to x = 1.3 over a hump, turning 90°.
@@ -61,25 +109,106 @@ scene::Reconfigurable sweep_scene(const std::string& still, const std::string& m
   scene::KeyframedTrack track;
   track.translation = {{0.0, a, a, a + Eigen::Vector3d(0.6, 0, 0.3)}, {1.0, b, b + Eigen::Vector3d(-0.6, 0, 0.3), b}};
   track.rotation = {{0.0, qa}, {1.0, qb}};
-  scene.transitions = {{"sweep", "start", "end", true, {{"moving", track}}}};
+  scene.transitions = {one_track_transition("sweep", "moving", track)};
+  return scene;
+}
+
+/// 16 statues (1 m boxes, bunnies and armadillos in turn) in two rows of 8 along x, 1.2 m apart,
+/// the rows 1.6 m apart (a 0.6 m corridor); a 0.45 m armadillo walks down the corridor turning
+/// 90°, and swerves 0.2 m towards the fourth statue of the far row midway.
+scene::Reconfigurable gallery_scene() {
+  scene::Reconfigurable scene;
+  const geometry::Mesh bunny = cgal_mesh("bunny00.off"), armadillo = cgal_mesh("armadillo.off");
+  for (int k = 0; k < 16; ++k) {
+    geometry::Mesh mesh = k % 2 == 0 ? bunny : armadillo;
+    const int row = k / 8, column = k % 8;
+    mesh.V.rowwise() += Eigen::RowVector3d(1.2 * column, row == 0 ? -0.8 : 0.8, 0);
+    scene.parts.push_back(make_part("statue_" + std::to_string(k), std::move(mesh)));
+  }
+  scene.parts.push_back(make_part("walker", cgal_mesh("armadillo.off", 0.45)));
+  const Eigen::Vector3d a(-1.0, 0, -0.2), m(3.6, 0.2, -0.2), b(9.4, 0, -0.2);
+  const Eigen::Quaterniond qa = Eigen::Quaterniond::Identity();
+  const Eigen::Quaterniond qb(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ()));
+  scene.states = {{"start", {{"walker", {qa, a}}}}, {"end", {{"walker", {qb, b}}}}};
+  scene::KeyframedTrack track;
+  track.translation = polyline_keys({{0.0, a}, {0.5, m}, {1.0, b}});
+  track.translation[1].in = m - Eigen::Vector3d(1.5, 0, 0);  // a smooth swerve through the middle key
+  track.translation[1].out = m + Eigen::Vector3d(1.5, 0, 0);
+  track.rotation = {{0.0, qa}, {1.0, qb}};
+  scene.transitions = {one_track_transition("walk", "walker", track)};
   return scene;
 }
 
 struct Fixture {
+  std::string label;
   scene::Reconfigurable scene;
   collision::BodyTrees trees;
+  int transition = 0;
+  /// The update benchmark moves translation key `edit_key` of `edit_part` up and down by 2 mm
+  /// (after inserting a key at t = 0.8 if `insert_edit_key`).
+  std::string edit_part;
+  int edit_key = 1;
+  bool insert_edit_key = false;
   int triangles = 0;
+  /// Distinct sample times of every part's proxy (1 mm): the engine's time resolution.
+  std::vector<double> sample_times;
 };
 
 const Fixture& fixture(int which) {
   static std::map<int, Fixture> cache;
+  static std::mutex mutex;
+  std::lock_guard lock(mutex);
   auto it = cache.find(which);
   if (it != cache.end()) return it->second;
   Fixture f;
-  f.scene = which == 0 ? sweep_scene("elephant.off", "elephant.off") : sweep_scene("armadillo.off", "bunny00.off");
+  const fs::path kitchen = fs::path(RECONFIG_SOURCE_DIR) / "examples" / "kitchen" / "scene.json";
+  switch (which) {
+    case kElephant:
+      f.label = "elephant through elephant";
+      f.scene = sweep_scene("elephant.off", "elephant.off");
+      break;
+    case kBunnyArmadillo:
+      f.label = "bunny through armadillo";
+      f.scene = sweep_scene("armadillo.off", "bunny00.off");
+      break;
+    case kEight:
+      f.label = "eight through eight";
+      f.scene = sweep_scene("eight.off", "eight.off");
+      break;
+    case kKitchenHasty:
+    case kKitchen:
+      f.scene = scene::load_scene(kitchen);
+      f.transition = f.scene.find_transition(which == kKitchen ? "open" : "open_hasty");
+      f.label = which == kKitchen ? "kitchen, open (collision-free)" : "kitchen, open_hasty (collides)";
+      f.edit_part = "pullout_shelf";  // key 1: where the shelf starts to slide out
+      break;
+    case kGallery:
+      f.label = "gallery: walker between 16 statues";
+      f.scene = gallery_scene();
+      f.edit_part = "walker";
+      break;
+    default:
+      throw std::runtime_error("no such scene");
+  }
+  if (f.edit_part.empty()) {
+    f.edit_part = "moving";
+    f.insert_edit_key = true;
+  }
   f.trees = collision::build_body_trees(f.scene);
-  for (const auto& part : f.scene.parts) f.triangles += part.mesh.face_count();
+  std::set<double> times;
+  for (int p = 0; p < static_cast<int>(f.scene.parts.size()); ++p) {
+    f.triangles += f.scene.parts[p].mesh.face_count();
+    for (double t : collision::build_part_proxy(f.scene, f.transition, p, 1e-3).times) times.insert(t);
+  }
+  f.sample_times.assign(times.begin(), times.end());
   return cache.emplace(which, std::move(f)).first->second;
+}
+
+void describe(benchmark::State& state, const Fixture& f) {
+  state.SetLabel(f.label);
+  state.counters["triangles"] = f.triangles;
+  state.counters["parts"] = static_cast<double>(f.scene.parts.size());
+  state.counters["samples"] = static_cast<double>(f.sample_times.size());
 }
 
 collision::DopFamily family(int dop) {
@@ -91,52 +220,187 @@ void BM_FullDetection(benchmark::State& state) {
   collision::DetectorOptions options;
   options.tolerance = 1e-3;
   options.dop = family(static_cast<int>(state.range(1)));
-  long contacts = 0, samples = 0;
+  long contacts = 0, samples = 0, bound_tests = 0, narrow = 0;
   for (auto _ : state) {
-    collision::SpacetimeDetector detector(0, options);
+    collision::SpacetimeDetector detector(f.transition, options);
     detector.detect(f.scene, f.trees);
     contacts = static_cast<long>(detector.contacts().size());
     samples = detector.last_stats().proxy_samples;
+    bound_tests = detector.last_stats().bound_tests;
+    narrow = detector.last_stats().narrow_phase;
   }
-  state.counters["triangles"] = f.triangles;
+  describe(state, f);
   state.counters["contacts"] = static_cast<double>(contacts);
-  state.counters["proxy_samples"] = static_cast<double>(samples);
+  state.counters["proxy_samples"] = static_cast<double>(samples);  // summed over the parts
+  state.counters["bound_tests"] = static_cast<double>(bound_tests);
+  state.counters["narrow_phase"] = static_cast<double>(narrow);
 }
-BENCHMARK(BM_FullDetection)->ArgsProduct({{0, 1}, {28}})->ArgNames({"scene", "dop"})->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_FullDetection)->ArgsProduct({{0}, {8, 80}})->ArgNames({"scene", "dop"})->Unit(benchmark::kMillisecond);
+// Scenes 0–4 with every DOP family; the 1 M-triangle gallery (minutes per run) with 28 only.
+BENCHMARK(BM_FullDetection)
+    ->ArgsProduct({{kElephant, kBunnyArmadillo, kEight, kKitchenHasty, kKitchen}, {28, 8, 80}})
+    ->ArgNames({"scene", "dop"})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(BM_FullDetection)
+    ->Args({kGallery, 28})
+    ->ArgNames({"scene", "dop"})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(1);
 
 void BM_UpdateAfterKeyEdit(benchmark::State& state) {
   const Fixture& f = fixture(static_cast<int>(state.range(0)));
   scene::Reconfigurable scene = f.scene;
-  collision::SpacetimeDetector detector(0, {});
+  const std::string transition = scene.transitions[f.transition].name;
+  collision::SpacetimeDetector detector(f.transition, {});
   detector.detect(scene, f.trees);
   scene::History history;
-  detector.update(scene, f.trees, history.execute(scene, scene::insert_key("sweep", "moving", scene::KeyKind::kTranslation, 0.8)));
-  motion::TranslationKey key = std::get<scene::KeyframedTrack>(scene.transitions[0].tracks.at("moving")).translation[1];
+  if (f.insert_edit_key)
+    detector.update(scene, f.trees,
+                    history.execute(scene, scene::insert_key(transition, f.edit_part, scene::KeyKind::kTranslation, 0.8)));
+  motion::TranslationKey key =
+      std::get<scene::KeyframedTrack>(scene.transitions[f.transition].tracks.at(f.edit_part)).translation[f.edit_key];
   double shift = 0.002;
   for (auto _ : state) {
     key.point.z() += shift;
     key.in.z() += shift;
     key.out.z() += shift;
     shift = -shift;
-    const scene::DirtySet dirty = history.execute(scene, scene::set_translation_key("sweep", "moving", 1, key));
+    const scene::DirtySet dirty = history.execute(scene, scene::set_translation_key(transition, f.edit_part, f.edit_key, key));
     detector.update(scene, f.trees, dirty);
   }
-  state.counters["triangles"] = f.triangles;
+  describe(state, f);
+  state.counters["contacts"] = static_cast<double>(detector.contacts().size());
 }
-BENCHMARK(BM_UpdateAfterKeyEdit)->Arg(0)->Arg(1)->ArgName("scene")->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_UpdateAfterKeyEdit)
+    ->ArgsProduct({{kElephant, kBunnyArmadillo, kEight, kKitchenHasty, kKitchen}})
+    ->ArgName("scene")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(BM_UpdateAfterKeyEdit)->Arg(kGallery)->ArgName("scene")->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(2);
 
 void BM_ReferenceCheck(benchmark::State& state) {
   const Fixture& f = fixture(static_cast<int>(state.range(0)));
-  collision::SpacetimeDetector detector(0, {});
-  detector.detect(f.scene, f.trees);
   collision::ReferenceCheckRequest request;
-  request.samples = static_cast<int>(detector.last_stats().proxy_samples);  // same time resolution
-  for (auto _ : state) benchmark::DoNotOptimize(collision::reference_check(f.scene, request));
-  state.counters["samples"] = request.samples;
-  state.counters["triangles"] = f.triangles;
+  request.samples = static_cast<int>(f.sample_times.size());  // same time resolution
+  request.transitions = {f.transition};
+  long colliding = 0;
+  for (auto _ : state) {
+    const collision::ReferenceCheckResult result = collision::reference_check(f.scene, request);
+    std::set<int> samples;
+    for (const auto& contact : result.contacts.front()) samples.insert(contact.sample);
+    colliding = static_cast<long>(samples.size());
+  }
+  describe(state, f);
+  state.counters["colliding_samples"] = static_cast<double>(colliding);
 }
-BENCHMARK(BM_ReferenceCheck)->Arg(0)->Arg(1)->ArgName("scene")->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ReferenceCheck)
+    ->ArgsProduct({{kElephant, kBunnyArmadillo, kEight, kKitchenHasty, kKitchen}})
+    ->ArgName("scene")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(BM_ReferenceCheck)->Arg(kGallery)->ArgName("scene")->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+
+#ifdef RECONFIG_HAVE_FCL
+/// FCL 0.7's own BVHs (BVHModel<OBBRSS>, built once per part) and the engine's result, per scene.
+struct FclModels {
+  std::vector<std::shared_ptr<fcl::CollisionGeometryd>> geometry;
+  std::vector<collision::TriangleContact> engine_contacts;  ///< 28-DOP, 1 mm: for the miss count
+};
+
+const FclModels& fcl_models(int which) {
+  static std::map<int, FclModels> cache;
+  static std::mutex mutex;
+  std::lock_guard lock(mutex);
+  auto it = cache.find(which);
+  if (it != cache.end()) return it->second;
+  const Fixture& f = fixture(which);
+  FclModels models;
+  for (const auto& part : f.scene.parts) {
+    std::vector<fcl::Vector3d> vertices;
+    std::vector<fcl::Triangle> triangles;
+    for (int v = 0; v < part.mesh.V.rows(); ++v) vertices.emplace_back(part.mesh.V.row(v).transpose());
+    for (int t = 0; t < part.mesh.F.rows(); ++t) triangles.emplace_back(part.mesh.F(t, 0), part.mesh.F(t, 1), part.mesh.F(t, 2));
+    auto model = std::make_shared<fcl::BVHModel<fcl::OBBRSSd>>();
+    model->beginModel(static_cast<int>(triangles.size()), static_cast<int>(vertices.size()));
+    model->addSubModel(vertices, triangles);
+    model->endModel();
+    model->computeLocalAABB();
+    models.geometry.push_back(std::move(model));
+  }
+  collision::SpacetimeDetector detector(f.transition, {});
+  detector.detect(f.scene, f.trees);
+  models.engine_contacts = detector.contacts();
+  return cache.emplace(which, std::move(models)).first->second;
+}
+
+/// Every pair of parts that FCL finds intersecting at time t (a broad phase over the parts'
+/// AABBs, then FCL's BVH test, stopping at the first intersecting triangle pair).
+std::vector<std::pair<int, int>> fcl_colliding_pairs(const Fixture& f, const FclModels& models, double t) {
+  const int n = static_cast<int>(f.scene.parts.size());
+  std::vector<std::unique_ptr<fcl::CollisionObjectd>> objects;
+  fcl::DynamicAABBTreeCollisionManagerd manager;
+  for (int p = 0; p < n; ++p) {
+    const motion::Pose pose = f.scene.pose_at(f.transition, p, t);
+    const Eigen::Isometry3d M = pose.to_isometry(f.scene.parts[p].center);
+    auto object = std::make_unique<fcl::CollisionObjectd>(models.geometry[p], M.linear(), M.translation());
+    object->setUserData(reinterpret_cast<void*>(static_cast<std::intptr_t>(p)));
+    manager.registerObject(object.get());
+    objects.push_back(std::move(object));
+  }
+  manager.setup();
+  std::vector<std::pair<int, int>> pairs;
+  manager.collide(&pairs, [](fcl::CollisionObjectd* o1, fcl::CollisionObjectd* o2, void* data) {
+    fcl::CollisionRequestd request;  // one contact: whether they intersect
+    fcl::CollisionResultd result;
+    if (fcl::collide(o1, o2, request, result) > 0) {
+      const int a = static_cast<int>(reinterpret_cast<std::intptr_t>(o1->getUserData()));
+      const int b = static_cast<int>(reinterpret_cast<std::intptr_t>(o2->getUserData()));
+      static_cast<std::vector<std::pair<int, int>>*>(data)->emplace_back(std::min(a, b), std::max(a, b));
+    }
+    return false;  // go on: every colliding pair
+  });
+  std::sort(pairs.begin(), pairs.end());
+  return pairs;
+}
+
+/// FCL discrete collision at every one of the engine's proxy sample times, parallel over the
+/// samples like the engine and the reference check. Counters: samples with a collision, (sample,
+/// pair) hits, and how many of those no engine contact of the same pair covers (misses).
+void BM_FclPerStep(benchmark::State& state) {
+  const int which = static_cast<int>(state.range(0));
+  const Fixture& f = fixture(which);
+  const FclModels& models = fcl_models(which);
+  const int samples = static_cast<int>(f.sample_times.size());
+  std::vector<std::vector<std::pair<int, int>>> hits(samples);
+  for (auto _ : state) {
+    tbb::parallel_for(0, samples, [&](int s) { hits[s] = fcl_colliding_pairs(f, models, f.sample_times[s]); });
+    benchmark::DoNotOptimize(hits.data());
+  }
+  long colliding_samples = 0, pair_hits = 0, missed = 0;
+  for (int s = 0; s < samples; ++s) {
+    colliding_samples += hits[s].empty() ? 0 : 1;
+    for (const auto& [a, b] : hits[s]) {
+      ++pair_hits;
+      const double t = f.sample_times[s];
+      const bool covered = std::any_of(models.engine_contacts.begin(), models.engine_contacts.end(), [&](const auto& c) {
+        return c.part_a == a && c.part_b == b && c.t0 <= t + 1e-9 && t - 1e-9 <= c.t1;
+      });
+      missed += covered ? 0 : 1;
+    }
+  }
+  describe(state, f);
+  state.counters["colliding_samples"] = static_cast<double>(colliding_samples);
+  state.counters["pair_hits"] = static_cast<double>(pair_hits);
+  state.counters["missed_by_engine"] = static_cast<double>(missed);
+}
+BENCHMARK(BM_FclPerStep)
+    ->ArgsProduct({{kElephant, kBunnyArmadillo, kEight, kKitchenHasty, kKitchen}})
+    ->ArgName("scene")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(BM_FclPerStep)->Arg(kGallery)->ArgName("scene")->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+#endif
 
 }  // namespace
 

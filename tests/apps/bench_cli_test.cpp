@@ -37,6 +37,44 @@ TEST_F(BenchCli, TableForPeople) {
   EXPECT_NE(run.out.find("faster than BM_NewtonStep/3"), std::string::npos) << run.out;
 }
 
+TEST_F(BenchCli, CollisionSuiteSummarizesEachSceneWithTheBaselineRatios) {
+  if (!std::filesystem::exists(testing::binary_dir() / "bin" / "bench_collision")) GTEST_SKIP() << "no bench_collision";
+  // Scene 4: the kitchen's collision-free transition (22 parts, 1.2 K triangles), the quickest.
+  const auto run = testing::run_reconfig("bench collision --filter 'scene:4/' --min-time 0.01 --json");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const nlohmann::json report = nlohmann::json::parse(run.out);
+  EXPECT_EQ(report["suite"], "collision");
+  bool fcl = false;
+  for (const auto& b : report["benchmarks"]) fcl = fcl || b["name"].get<std::string>().rfind("BM_FclPerStep", 0) == 0;
+  ASSERT_EQ(report["summary"].size(), 1u);
+  const auto& row = report["summary"][0];
+  EXPECT_EQ(row["scene"], "4");
+  EXPECT_GE(row["parts"].get<double>(), 20.0);
+  EXPECT_GT(row["samples"].get<double>(), 2.0);
+  for (const char* column : {"engine_ns", "dop8_ns", "dop80_ns", "update_ns", "reference_ns"})
+    EXPECT_GT(row[column].get<double>(), 0.0) << column;
+  EXPECT_GT(row["engine_vs_reference"].get<double>(), 0.0);
+  // Engine vs reference for each of the three DOP families, and vs FCL when it was found.
+  EXPECT_EQ(report["ratios"].size(), fcl ? 6u : 3u);
+  if (fcl) {
+    EXPECT_GT(row["engine_vs_fcl"].get<double>(), 0.0);
+    EXPECT_EQ(row["fcl_colliding_samples"].get<double>(), 0.0);  // collision-free
+    EXPECT_EQ(row["fcl_missed_by_engine"].get<double>(), 0.0);
+  } else {
+    EXPECT_TRUE(row["engine_vs_fcl"].is_null());
+  }
+}
+
+TEST_F(BenchCli, CollisionTableForPeople) {
+  if (!std::filesystem::exists(testing::binary_dir() / "bin" / "bench_collision")) GTEST_SKIP() << "no bench_collision";
+  const auto run = testing::run_reconfig("bench collision --filter 'scene:4/' --min-time 0.01");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.out.find("per scene"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("engine/FCL"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("kitchen, open"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("than BM_ReferenceCheck/scene:4"), std::string::npos) << run.out;
+}
+
 TEST_F(BenchCli, UnknownSuiteIsBadInput) {
   const auto run = testing::run_reconfig("bench nonsense");
   EXPECT_EQ(run.exit_code, 2);
