@@ -5,8 +5,17 @@
 namespace reconfig::scene {
 
 motion::Pose evaluate_track(const Track& track, double t, const motion::Pose& hold, const Eigen::Vector3d& center) {
-  if (const auto* screw = std::get_if<ScrewPosesTrack>(&track))
-    return motion::ScrewTrack(screw->poses, center).evaluate(t);
+  if (const auto* screw = std::get_if<ScrewPosesTrack>(&track)) {
+    // Only the keys around t matter: the result is the same, bit for bit, as evaluating the
+    // whole track, without building a screw per segment (driven tracks have hundreds).
+    const auto& keys = screw->poses;
+    if (keys.size() <= 2) return motion::ScrewTrack(keys, center).evaluate(t);
+    if (!(t > keys.front().time)) return motion::ScrewTrack({keys.front()}, center).evaluate(t);
+    if (!(t < keys.back().time)) return motion::ScrewTrack({keys.back()}, center).evaluate(t);
+    const auto after = std::upper_bound(keys.begin(), keys.end(), t,
+                                        [](double time, const motion::ScrewKey& key) { return time < key.time; });
+    return motion::ScrewTrack({*std::prev(after), *after}, center).evaluate(t);
+  }
   const auto& keyed = std::get<KeyframedTrack>(track);
   motion::Pose pose = hold;
   if (!keyed.translation.empty()) pose.translation = motion::BezierTranslationTrack(keyed.translation).evaluate(t);
