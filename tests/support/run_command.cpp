@@ -21,12 +21,12 @@ std::string slurp(const std::filesystem::path& file) {
 
 }  // namespace
 
-CommandResult run_reconfig(const std::string& arguments) {
+CommandResult run_tool(const std::string& tool, const std::string& arguments) {
   static int runs = 0;  // a folder of its own: the calling test may be using fresh_temp_dir()
   const std::filesystem::path dir =
       binary_dir() / "test-tmp" / ("run." + std::to_string(::getpid()) + "." + std::to_string(++runs));
   std::filesystem::create_directories(dir);
-  const std::string command = (binary_dir() / "bin" / "reconfig").string() + " " + arguments + " >" +
+  const std::string command = (binary_dir() / "bin" / tool).string() + " " + arguments + " >" +
                               (dir / "out").string() + " 2>" + (dir / "err").string() + " </dev/null";
   const int status = std::system(command.c_str());
   CommandResult result;
@@ -35,5 +35,7 @@ CommandResult run_reconfig(const std::string& arguments) {
   result.err = slurp(dir / "err");
   return result;
 }
+
+CommandResult run_reconfig(const std::string& arguments) { return run_tool("reconfig", arguments); }
 
 }  // namespace reconfig::testing

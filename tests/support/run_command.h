@@ -12,7 +12,10 @@ struct CommandResult {
   std::string err;  ///< standard error
 };
 
-/// Runs `build/bin/reconfig <arguments>` through the shell (arguments are not quoted).
+/// Runs `build/bin/<tool> <arguments>` through the shell (arguments are not quoted).
+CommandResult run_tool(const std::string& tool, const std::string& arguments);
+
+/// Runs `build/bin/reconfig <arguments>`.
 CommandResult run_reconfig(const std::string& arguments);
 
 }  // namespace reconfig::testing

@@ -1,0 +1,61 @@
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "support/run_command.h"
+#include "studio_test_util.h"
+
+namespace reconfig::studio {
+namespace {
+
+TEST(StudioCli, TheExampleSessionScriptPasses) {
+  const std::filesystem::path scene = bench_table_copy();
+  const auto result = testing::run_tool(
+      "reconfig-studio", scene.string() + " --script " + (scene.parent_path() / "studio-session.txt").string());
+  EXPECT_EQ(result.exit_code, 0) << result.err;
+}
+
+TEST(StudioCli, AFailedExpectationNamesTheLineAndExitsOne) {
+  const std::filesystem::path scene = bench_table_copy();
+  const std::filesystem::path script = scene.parent_path() / "wrong.txt";
+  std::ofstream(script) << "wait-collisions\n# the unfold choreography collides\nexpect-collisions 0\n";
+  const auto result = testing::run_tool("reconfig-studio", scene.string() + " --script " + script.string());
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_NE(result.err.find("wrong.txt:3: expected 0 collision intervals"), std::string::npos) << result.err;
+}
+
+TEST(StudioCli, ScreenshotWritesAPngOfTheWholeStudio) {
+  const std::filesystem::path scene = bench_table_copy();
+  const std::filesystem::path png = scene.parent_path() / "studio.png";
+  const auto result = testing::run_tool("reconfig-studio", scene.string() + " --screenshot " + png.string() +
+                                                               " --frames 3 --size 640x400 --frame-times " +
+                                                               (scene.parent_path() / "times.json").string());
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  std::ifstream in(png, std::ios::binary);
+  char signature[8] = {};
+  in.read(signature, 8);
+  EXPECT_EQ(std::string(signature + 1, 3), "PNG");
+  std::ifstream times(scene.parent_path() / "times.json");
+  std::string json((std::istreambuf_iterator<char>(times)), {});
+  EXPECT_NE(json.find("\"frames\": 3"), std::string::npos) << json;
+}
+
+TEST(StudioCli, BadInputExitsTwoWithAMessage) {
+  const std::filesystem::path dir = testing::fresh_temp_dir();
+  std::ofstream(dir / "broken.json") << "{ not json";
+  auto result = testing::run_tool("reconfig-studio", (dir / "broken.json").string() + " --frames 1");
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_NE(result.err.find("broken.json"), std::string::npos) << result.err;
+  result = testing::run_tool("reconfig-studio", "--size 12 --frames 1");
+  EXPECT_EQ(result.exit_code, 2);
+  const std::filesystem::path scene = bench_table_copy();
+  result = testing::run_tool("reconfig-studio", scene.string() + " --script " + (dir / "none.txt").string());
+  EXPECT_EQ(result.exit_code, 2);
+  std::ofstream(dir / "typo.txt") << "clik 10 10\n";
+  result = testing::run_tool("reconfig-studio", scene.string() + " --script " + (dir / "typo.txt").string());
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_NE(result.err.find("typo.txt:1: unknown action \"clik\""), std::string::npos) << result.err;
+}
+
+}  // namespace
+}  // namespace reconfig::studio
