@@ -34,7 +34,9 @@ bool begin_panel(const char* name, ImVec2 pos, ImVec2 size, bool padding) {
   const bool open = ImGui::Begin(name, nullptr,
                                  ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
                                      ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus |
-                                     (padding ? 0 : ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse));
+                                     (padding ? 0
+                                              : ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse |
+                                                    ImGuiWindowFlags_NoBackground));
   if (!padding) ImGui::PopStyleVar();
   return open;
 }

@@ -23,7 +23,8 @@ float status_bar_height();
 /// The rectangles for the current ImGui frame (display size, main menu bar, status bar).
 PanelRects current_panel_rects();
 
-/// Begins a panel window at that place (always call ImGui::End() after).
+/// Begins a panel window at that place (always call ImGui::End() after). Without padding the
+/// window has no background either: its content (the viewport image) covers all of it.
 bool begin_panel(const char* name, ImVec2 pos, ImVec2 size, bool padding = true);
 
 }  // namespace reconfig::studio

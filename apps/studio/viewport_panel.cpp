@@ -33,16 +33,17 @@ void Studio::draw_viewport() {
   layout_.viewport_max = {origin.x + width, origin.y + height};
   if (document_ && frame_pending_) frame_all();
 
-  render_viewport_image(width, height);
-  // The image's rows are bottom-up (GL): flip it with the texture coordinates.
-  ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(viewport_image_.texture())),
-               {static_cast<float>(width), static_cast<float>(height)}, {0, 1}, {1, 0});
-  ImGui::SetCursorScreenPos(origin);
+  // Input first, so the picture drawn this frame already shows what the mouse did.
   ImGui::InvisibleButton("##viewport", {static_cast<float>(width), static_cast<float>(height)},
                          ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
                              ImGuiButtonFlags_MouseButtonMiddle);
+  if (document_) handle_viewport_mouse(origin, width, height);
+  render_viewport_image(width, height);
+  // The image's rows are bottom-up (GL): flip it with the texture coordinates.
+  ImGui::SetCursorScreenPos(origin);
+  ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(viewport_image_.texture())),
+               {static_cast<float>(width), static_cast<float>(height)}, {0, 1}, {1, 0});
   if (document_) {
-    handle_viewport_mouse(origin, width, height);
     draw_gizmo(ImGui::GetWindowDrawList(), origin, width, height);
     const scene::Reconfigurable& scene = document_->scene();
     const std::string caption = active_transition_ >= 0
@@ -51,7 +52,7 @@ void Studio::draw_viewport() {
     ImGui::GetWindowDrawList()->AddText({origin.x + 10, origin.y + 8}, IM_COL32(40, 40, 50, 255), caption.c_str());
   } else {
     ImGui::GetWindowDrawList()->AddText({origin.x + 20, origin.y + 20}, IM_COL32(60, 60, 70, 255),
-                                        "No design open: File > Open (Ctrl-O) or reconfig-studio SCENE.json");
+                                        "No design open: File > Open, or reconfig-studio SCENE.json");
   }
   ImGui::End();
 }
@@ -93,6 +94,24 @@ void Studio::render_viewport_image(int width, int height) {
       for (int i = 0; i <= 120; ++i)
         path.points.push_back(scene.pose_at(active_transition_, selected_part_, i / 120.0).translation + pivot);
       list.lines.push_back(std::move(path));
+      // Its translation keys and their Bézier handles (edited in the inspector).
+      const auto& tracks = scene.transitions[active_transition_].tracks;
+      const auto it = tracks.find(scene.parts[selected_part_].name);
+      if (const auto* keyed = it == tracks.end() ? nullptr : std::get_if<scene::KeyframedTrack>(&it->second)) {
+        render::LineItem handles;
+        handles.strip = false;
+        handles.color = {0.95f, 0.55f, 0.1f, 1.0f};
+        const double tick = 0.01 * camera_.distance;
+        for (const motion::TranslationKey& key : keyed->translation) {
+          const Eigen::Vector3d point = pivot + key.point;
+          handles.points.insert(handles.points.end(), {point, pivot + key.in, point, pivot + key.out});
+          for (int axis = 0; axis < 3; ++axis) {
+            handles.points.push_back(point - tick * Eigen::Vector3d::Unit(axis));
+            handles.points.push_back(point + tick * Eigen::Vector3d::Unit(axis));
+          }
+        }
+        list.lines.push_back(std::move(handles));
+      }
     }
   }
   renderer_.draw(list, camera_, width, height);
