@@ -1,0 +1,54 @@
+#!/usr/bin/env python3
+"""Turns `reconfig bench collision --json` into the Markdown table of docs/benchmarks.md.
+
+    build/bin/reconfig bench collision --json > collision.json        # every scene (slow: scene 5)
+    build/bin/reconfig bench collision --json --filter 'scene:[0-4]/' > collision.json
+    bench/collision_table.py collision.json                             # prints the table
+
+Times are real (wall-clock) times; ratios are baseline time / engine time (> 1: the engine is
+faster), the engine being the 28-DOP full detection at 1 mm.
+"""
+import json
+import sys
+
+
+def fmt_time(ns):
+    if ns is None:
+        return "—"
+    for scale, unit in ((1e9, "s"), (1e6, "ms"), (1e3, "µs")):
+        if ns >= scale:
+            return f"{ns / scale:.3g} {unit}"
+    return f"{ns:.3g} ns"
+
+
+def fmt_ratio(r):
+    if r is None:
+        return "—"
+    return f"{r:.3g}× faster" if r >= 1 else f"{1 / r:.3g}× slower"
+
+
+def fmt_count(n):
+    return f"{n / 1e6:.2f} M" if n >= 1e6 else f"{n / 1e3:.1f} K" if n >= 1e3 else f"{n:.0f}"
+
+
+def main(path):
+    report = json.load(open(path))
+    context = report["context"]
+    load = context.get("load_avg") or [None]
+    print(f"<!-- {context.get('date', '')}, {context.get('num_cpus', '?')} CPUs, "
+          f"load average {'?' if load[0] is None else f'{load[0]:.2f}'} at the start -->")
+    print("| # | scene | triangles | parts | samples | engine 28-DOP | 8-DOP | 80-DOP | update after one key edit "
+          "| reference | FCL 0.7 | engine / reference | engine / FCL | FCL colliding samples (missed by engine) |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+    for row in report["summary"]:
+        fcl_hits = row.get("fcl_colliding_samples")
+        hits = "—" if fcl_hits is None else f"{fcl_hits:.0f} ({row.get('fcl_missed_by_engine', 0):.0f})"
+        print(f"| {row['scene']} | {row['label']} | {fmt_count(row['triangles'])} | {row['parts']:.0f} "
+              f"| {row['samples']:.0f} | {fmt_time(row['engine_ns'])} | {fmt_time(row['dop8_ns'])} "
+              f"| {fmt_time(row['dop80_ns'])} | {fmt_time(row['update_ns'])} | {fmt_time(row['reference_ns'])} "
+              f"| {fmt_time(row['fcl_ns'])} | {fmt_ratio(row['engine_vs_reference'])} "
+              f"| {fmt_ratio(row['engine_vs_fcl'])} | {hits} |")
+
+
+if __name__ == "__main__":
+    main(sys.argv[1] if len(sys.argv) > 1 else "/dev/stdin")
