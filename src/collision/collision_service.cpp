@@ -84,7 +84,12 @@ void CollisionService::run() {
     current->version = version;
     current->complete = false;
     current->transitions.resize(n);
-    for (int t = 0; t < n; ++t) current->transitions[t].up_to_date = false;
+    for (int t = 0; t < n; ++t) {
+      // Entries not detected yet still name their transition (a resize default-constructs them).
+      current->transitions[t].transition = t;
+      current->transitions[t].name = scene->transitions[t].name;
+      current->transitions[t].up_to_date = false;
+    }
     bool cancelled = false;
     for (int t = 0; t < n && !cancelled; ++t) {
       DetectCallbacks callbacks;

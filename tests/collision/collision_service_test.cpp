@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <thread>
+
 #include "reconfig/collision/consolidate.h"
 #include "reconfig/scene/edits.h"
 #include "reconfig/scene/history.h"
@@ -42,6 +44,23 @@ TEST(CollisionService, PublishesTheIntervalsOfEveryTransition) {
   for (const CollisionInterval& frame : snapshot->transitions[0].frames) EXPECT_LE(frame.duration(), 0.01 + 1e-12);
   EXPECT_TRUE(snapshot->transitions[1].intervals.empty());
   for (const IntervalDiffEntry& change : snapshot->transitions[0].changes) EXPECT_EQ(change.change, IntervalChange::kAppeared);
+}
+
+// Every published picture, also the early ones while later transitions are still waiting for
+// detection, names each entry's transition (the UI finds entries by index).
+TEST(CollisionService, EveryPublishedEntryNamesItsTransition) {
+  CollisionService service;
+  service.submit(std::make_shared<scene::Reconfigurable>(bench_table()), everything());
+  for (int polls = 0; polls < 2000; ++polls) {
+    const auto snapshot = service.snapshot();
+    for (std::size_t t = 0; t < snapshot->transitions.size(); ++t) {
+      EXPECT_EQ(snapshot->transitions[t].transition, static_cast<int>(t));
+      EXPECT_FALSE(snapshot->transitions[t].name.empty());
+    }
+    if (snapshot->complete) break;
+    std::this_thread::sleep_for(100us);
+  }
+  ASSERT_TRUE(service.wait_until_complete(60s));
 }
 
 TEST(CollisionService, AnEditMakesTheCollisionDisappearAndUndoBringsItBack) {
