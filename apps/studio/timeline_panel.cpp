@@ -155,9 +155,18 @@ void Studio::draw_timeline() {
     draw->AddRectFilled({x0, y}, {x1, y + kRowHeight}, IM_COL32(236, 236, 240, 255));
   const scene::KeyframedTrack* track = nullptr;
   if (selected_part_ >= 0) {
-    const auto& tracks = scene.transitions[active_transition_].tracks;
-    const auto it = tracks.find(scene.parts[selected_part_].name);
-    if (it != tracks.end()) track = std::get_if<scene::KeyframedTrack>(&it->second);
+    const scene::Transition& transition = scene.transitions[active_transition_];
+    const auto it = transition.tracks.find(scene.parts[selected_part_].name);
+    if (it != transition.tracks.end()) track = std::get_if<scene::KeyframedTrack>(&it->second);
+    // Screw-pose tracks (and parts a linkage drives) show their poses, not draggable keys.
+    if (it != transition.tracks.end() && !track) {
+      const bool driven = transition.linkage && transition.linkage->drives(it->first);
+      for (const double time : scene::key_times(it->second))
+        for (const float y : {translation_y, rotation_y})
+          draw->AddCircleFilled({x_of(time), y + kRowHeight / 2}, 2.5f, IM_COL32(120, 90, 160, 255));
+      draw->AddText({x0 + 4, rotation_y + 3}, IM_COL32(90, 70, 130, 255),
+                    driven ? "driven by the transition's linkage" : "screw poses");
+    }
   }
   const auto key_times = [&](scene::KeyKind kind) {
     std::vector<double> times;
