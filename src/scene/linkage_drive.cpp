@@ -6,6 +6,7 @@
 #include <memory>
 #include <numbers>
 #include <set>
+#include <tuple>
 
 #include "reconfig/common/input_error.h"
 #include "reconfig/linkage/joint_order.h"
@@ -151,6 +152,35 @@ void compile_linkage_drive(Reconfigurable& scene, int index, DriveStatePoses sta
     fail(motor, error.message());
   }
 
+  // The end states: the drive defines the poses of the parts it carries. Checked before
+  // anything changes, so a failed compile leaves the scene as it was.
+  std::vector<std::tuple<int, std::string, motion::Pose>> state_updates;
+  for (const auto& [state, at_end, angle] :
+       {std::tuple{from_state, false, drive.from}, std::tuple{to_state, true, drive.to}}) {
+    const State& s = scene.states[state];
+    for (std::size_t b = 0; b < prepared.parts.size(); ++b) {
+      const std::string& name = scene.parts[prepared.parts[b]].name;
+      const motion::Pose pose = at_end ? compiled.keys[b].back().pose : compiled.keys[b].front().pose;
+      const auto listed = s.poses.find(name);
+      const bool filled_here = std::any_of(state_updates.begin(), state_updates.end(), [&](const auto& update) {
+        return std::get<0>(update) == state && std::get<1>(update) == name;
+      });
+      const motion::Pose* current = listed != s.poses.end() ? &listed->second : nullptr;
+      for (const auto& update : state_updates)
+        if (std::get<0>(update) == state && std::get<1>(update) == name) current = &std::get<2>(update);
+      if (!current || (state_poses == DriveStatePoses::kOverwrite && !filled_here)) {
+        state_updates.emplace_back(state, name, pose);
+      } else if (!poses_match(*current, pose)) {
+        fail(fmt::format("states[{}].poses.{}", state, name),
+             fmt::format("the pose of part \"{}\" in state \"{}\" does not match where the linkage of transition "
+                         "\"{}\" puts it at motor angle {}° (translation {}, rotation {}): remove the pose to let "
+                         "the drive define it",
+                         name, s.name, transition.name, angle, full_vector(pose.translation),
+                         full_quaternion(pose.rotation)));
+      }
+    }
+  }
+
   // Parts that the drive no longer carries lose the tracks it compiled for them.
   for (const auto& [part, track] : drive.compiled) {
     if (drive.drives(part)) continue;
@@ -167,28 +197,7 @@ void compile_linkage_drive(Reconfigurable& scene, int index, DriveStatePoses sta
     transition.tracks[name] = track;
     drive.compiled.emplace(name, std::move(track));
   }
-
-  // The end states: the drive defines the poses of the parts it carries.
-  for (const auto& [state, at_end, angle] :
-       {std::tuple{from_state, false, drive.from}, std::tuple{to_state, true, drive.to}}) {
-    State& s = scene.states[state];
-    for (std::size_t b = 0; b < prepared.parts.size(); ++b) {
-      const std::string& name = scene.parts[prepared.parts[b]].name;
-      const ScrewPosesTrack& track = drive.compiled.at(name);
-      const motion::Pose pose = at_end ? track.poses.back().pose : track.poses.front().pose;
-      const auto listed = s.poses.find(name);
-      if (listed == s.poses.end() || state_poses == DriveStatePoses::kOverwrite) {
-        s.poses[name] = pose;
-      } else if (!poses_match(listed->second, pose)) {
-        fail(fmt::format("states[{}].poses.{}", state, name),
-             fmt::format("the pose of part \"{}\" in state \"{}\" does not match where the linkage of transition "
-                         "\"{}\" puts it at motor angle {}° (translation {}, rotation {}): remove the pose to let "
-                         "the drive define it",
-                         name, s.name, transition.name, angle, full_vector(pose.translation),
-                         full_quaternion(pose.rotation)));
-      }
-    }
-  }
+  for (auto& [state, name, pose] : state_updates) scene.states[state].poses[name] = pose;
 }
 
 void compile_linkage_drives(Reconfigurable& scene, DriveStatePoses state_poses) {
