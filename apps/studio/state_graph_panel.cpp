@@ -13,6 +13,8 @@
 namespace reconfig::studio {
 namespace {
 
+constexpr float kLoopRadius = 14;
+
 struct GraphGeometry {
   std::vector<ImVec2> nodes;   ///< per state
   std::vector<ImVec2> badges;  ///< per transition
@@ -23,7 +25,7 @@ GraphGeometry graph_geometry(const scene::Reconfigurable& scene, ImVec2 min, ImV
   GraphGeometry geometry;
   const int states = static_cast<int>(scene.states.size());
   const ImVec2 center{(min.x + max.x) / 2, (min.y + max.y) / 2};
-  const float radius = std::max(std::min(max.x - min.x, max.y - min.y) / 2 - 34, 10.0f);
+  const float radius = std::max(std::min(max.x - min.x, max.y - min.y) / 2 - 56, 10.0f);
   for (int s = 0; s < states; ++s) {
     const double angle = states == 1 ? 0 : M_PI + 2 * M_PI * s / states;
     geometry.nodes.push_back({center.x + (states == 1 ? 0 : radius * static_cast<float>(std::cos(angle))),
@@ -35,6 +37,14 @@ GraphGeometry graph_geometry(const scene::Reconfigurable& scene, ImVec2 min, ImV
     const int a = scene.find_state(transition.from), b = scene.find_state(transition.to);
     const ImVec2 pa = geometry.nodes[a], pb = geometry.nodes[b];
     const int k = seen[{std::min(a, b), std::max(a, b)}]++;
+    if (a == b) {
+      // A transition from a state to itself: a loop outside the node, the k-th one turned.
+      const double angle = -M_PI / 2 + 0.9 * k;
+      const float reach = geometry.node_radius + 2 * kLoopRadius;
+      geometry.badges.push_back({pa.x + reach * static_cast<float>(std::cos(angle)),
+                                 pa.y + reach * static_cast<float>(std::sin(angle))});
+      continue;
+    }
     const float side = (k % 2 == 0 ? 1.0f : -1.0f) * static_cast<float>((k + 1) / 2) * 26.0f * (a < b ? 1 : -1);
     const float dx = pb.x - pa.x, dy = pb.y - pa.y, length = std::max(std::sqrt(dx * dx + dy * dy), 1.0f);
     geometry.badges.push_back({(pa.x + pb.x) / 2 - dy / length * side, (pa.y + pb.y) / 2 + dx / length * side});
@@ -72,7 +82,15 @@ void Studio::draw_state_graph() {
     const ImVec2 m = geometry.badges[k];
     const bool active = k == active_transition_;
     const ImU32 color = active ? IM_COL32(30, 90, 220, 255) : IM_COL32(90, 90, 100, 255);
-    draw->AddBezierQuadratic(a, {2 * m.x - (a.x + b.x) / 2, 2 * m.y - (a.y + b.y) / 2}, b, color, active ? 3.0f : 1.5f);
+    if (transition.from == transition.to) {
+      const float dx = m.x - a.x, dy = m.y - a.y, length = std::max(std::sqrt(dx * dx + dy * dy), 1.0f);
+      const float to_center = length - kLoopRadius;
+      draw->AddCircle({a.x + dx / length * to_center, a.y + dy / length * to_center}, kLoopRadius, color, 0,
+                      active ? 3.0f : 1.5f);
+    } else {
+      draw->AddBezierQuadratic(a, {2 * m.x - (a.x + b.x) / 2, 2 * m.y - (a.y + b.y) / 2}, b, color,
+                               active ? 3.0f : 1.5f);
+    }
     // Collision badge.
     const collision::TransitionSnapshot* current = nullptr;
     if (snapshot)
