@@ -118,8 +118,9 @@ bool LinkageDrive::drives(const std::string& part) const {
 
 void compile_linkage_drive(Reconfigurable& scene, int index, DriveStatePoses state_poses) {
   Transition& transition = scene.transitions.at(index);
-  LinkageDrive& drive = *transition.linkage;
   const std::string path = fmt::format("transitions[{}]", index);
+  if (!transition.linkage) fail(path, fmt::format("transition \"{}\" has no linkage drive", transition.name));
+  LinkageDrive& drive = *transition.linkage;
   const int from_state = scene.find_state(transition.from), to_state = scene.find_state(transition.to);
   if (from_state < 0) fail(path + ".from", fmt::format("unknown state \"{}\"", transition.from));
   if (to_state < 0) fail(path + ".to", fmt::format("unknown state \"{}\"", transition.to));
