@@ -20,7 +20,7 @@ struct Transition {
   std::map<std::string, Track> tracks;
   /// A planar linkage that drives some parts (linkage_drive.h); their tracks in `tracks` are
   /// compiled from it (compile_linkage_drive) and saving writes the drive instead of them.
-  std::optional<LinkageDrive> linkage;
+  std::optional<LinkageDrive> linkage = std::nullopt;
 };
 
 }  // namespace reconfig::scene
