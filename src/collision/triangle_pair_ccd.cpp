@@ -7,6 +7,7 @@
 #include <deque>
 
 #include "reconfig/collision/ccd_primitives.h"
+#include "reconfig/collision/coplanarity_filter.h"
 #include "reconfig/geometry/triangle_intersection.h"
 
 namespace reconfig::collision {
@@ -16,6 +17,9 @@ using Eigen::Vector3d;
 
 constexpr int kContactTests = 15;  // 6 vertex–face + 9 edge–edge
 constexpr unsigned kAllTests = (1u << kContactTests) - 1;
+/// Pieces longer than this (fraction of the step) are split wherever the coplanarity filter
+/// cannot exclude a contact, without running the contact tests.
+constexpr double kScreenedWidth = 1.0 / 32;
 
 /// A piece of the (normalized) step and the contact tests that may still fire on it.
 struct Piece {
@@ -31,22 +35,25 @@ struct Motion {
   Vector3d at(int k, double s) const { return start[k] + s * (end[k] - start[k]); }
 };
 
-/// Runs contact test `index` over [lo, hi]: 0..2 A's vertex k vs B, 3..5 B's vertex k vs A,
-/// 6..14 A's edge i vs B's edge j.
+/// The points of contact test `index`: 0..2 A's vertex k vs B, 3..5 B's vertex k vs A, 6..14
+/// A's edge i vs B's edge j (as indices of `Motion`).
+std::array<int, 4> test_vertices(int index) {
+  if (index < 3) return {index, 3, 4, 5};
+  if (index < 6) return {index, 0, 1, 2};
+  const int i = (index - 6) / 3, j = (index - 6) % 3;
+  return {i, (i + 1) % 3, 3 + j, 3 + (j + 1) % 3};
+}
+
+/// Runs contact test `index` over [lo, hi].
 bool may_touch(const Motion& m, int index, double lo, double hi, const PrimitiveCcdOptions& base) {
   PrimitiveCcdOptions options = base;
   options.t_min = lo;
   options.t_max = hi;
   const auto& s = m.start;
   const auto& e = m.end;
-  if (index < 3) return vertex_face_ccd(s[index], s[3], s[4], s[5], e[index], e[3], e[4], e[5], options).hit;
-  if (index < 6) {
-    const int k = index;
-    return vertex_face_ccd(s[k], s[0], s[1], s[2], e[k], e[0], e[1], e[2], options).hit;
-  }
-  const int i = (index - 6) / 3, j = (index - 6) % 3;
-  const int a0 = i, a1 = (i + 1) % 3, b0 = 3 + j, b1 = 3 + (j + 1) % 3;
-  return edge_edge_ccd(s[a0], s[a1], s[b0], s[b1], e[a0], e[a1], e[b0], e[b1], options).hit;
+  const auto [p, a, b, c] = test_vertices(index);
+  if (index < 6) return vertex_face_ccd(s[p], s[a], s[b], s[c], e[p], e[a], e[b], e[c], options).hit;
+  return edge_edge_ccd(s[p], s[a], s[b], s[c], e[p], e[a], e[b], e[c], options).hit;
 }
 
 /// Whether the triangles' boxes over [lo, hi] are apart by more than the rounding of the
@@ -88,6 +95,19 @@ TrianglePairCcdResult triangle_pair_ccd(const TrianglePairCcdRequest& request) {
   // Rounding of x0 + s (x1 − x0), twice (both triangles), with room to spare.
   const double box_margin = 4 * kRobustPerturbation * scale + 0x1p-1000;
 
+  // Contact tests whose points never become coplanar on a piece are skipped outright
+  // (`coplanarity_filter.h`). A long piece where some may (strictly inside it) is halved
+  // without running them (a contact test that finds its contact costs far more than a
+  // halving); below `kScreenedWidth` they decide, as they stop the refinement around false
+  // roots.
+  std::array<MovingPoints, kContactTests> points;
+  for (int index = 0; index < kContactTests; ++index) {
+    const std::array<int, 4> vertices = test_vertices(index);
+    for (int k = 0; k < 4; ++k) {
+      points[index].start[k] = motion.start[vertices[k]];
+      points[index].end[k] = motion.end[vertices[k]];
+    }
+  }
   PrimitiveCcdOptions options;
   options.tolerance = request.distance_tolerance;
   options.max_boxes = request.max_boxes;
@@ -101,21 +121,44 @@ TrianglePairCcdResult triangle_pair_ccd(const TrianglePairCcdRequest& request) {
     ++result.pieces;
     if (boxes_apart(motion, piece.lo, piece.hi, box_margin)) continue;  // apart throughout
 
-    unsigned firing = 0;
+    unsigned coplanar = 0, at_an_end = 0;
     for (int index = 0; index < kContactTests; ++index) {
       if (!(piece.tests & (1u << index))) continue;
+      const Coplanarity c = coplanarity(points[index], piece.lo, piece.hi);
+      if (c != Coplanarity::kNever) coplanar |= 1u << index;
+      if (c == Coplanarity::kAtAnEnd) at_an_end |= 1u << index;
+    }
+    const double mid = 0.5 * (piece.lo + piece.hi);
+    const bool can_split = piece.lo < mid && mid < piece.hi;
+    const bool final_size = piece.hi - piece.lo <= request.time_tolerance || !can_split;
+    if (coplanar != 0 && final_size) {
+      // Reported whole if it holds an intersection; its ends are checked first, as they
+      // usually settle that without looking for the contact.
+      if (intersect_at(motion, piece.lo) || intersect_at(motion, piece.hi)) {
+        found.push_back({piece.lo, piece.hi});
+        continue;
+      }
+      bool touching = false;
+      for (int index = 0; index < kContactTests && !touching; ++index) {
+        if (!(coplanar & (1u << index))) continue;
+        ++result.contact_tests;
+        touching = may_touch(motion, index, piece.lo, piece.hi, options);
+      }
+      // Without a contact the status is that of the ends throughout: apart.
+      if (touching) found.push_back({piece.lo, piece.hi});
+      continue;
+    }
+    // Halving cannot separate a contact from the end of a piece: there the tests decide too.
+    const unsigned screened = piece.hi - piece.lo <= kScreenedWidth ? coplanar : at_an_end;
+    unsigned firing = coplanar & ~screened;
+    for (int index = 0; index < kContactTests; ++index) {
+      if (!(screened & (1u << index))) continue;
       ++result.contact_tests;
       if (may_touch(motion, index, piece.lo, piece.hi, options)) firing |= 1u << index;
     }
     if (firing == 0) {
       // No contact anywhere on the closed piece: one status throughout, robust to rounding.
-      if (intersect_at(motion, 0.5 * (piece.lo + piece.hi))) found.push_back({piece.lo, piece.hi});
-      continue;
-    }
-    const double mid = 0.5 * (piece.lo + piece.hi);
-    const bool can_split = piece.lo < mid && mid < piece.hi;
-    if (piece.hi - piece.lo <= request.time_tolerance || !can_split) {
-      found.push_back({piece.lo, piece.hi});
+      if (intersect_at(motion, mid)) found.push_back({piece.lo, piece.hi});
       continue;
     }
     if (result.pieces + static_cast<int>(queue.size()) >= request.max_pieces) {

@@ -274,5 +274,65 @@ TEST(TrianglePairCcdOracle, RandomContinuousPairsMatchDenseSampling) {
   EXPECT_GT(partial, 20);
 }
 
+/// The detector's settings (1/32 of the step, 1e-4): small triangles passing through each other
+/// or sliding by, as in deep interpenetrations. Every sampled intersection is reported; a piece
+/// decided by one static test really holds that status at every sample; a reported interval
+/// holds an intersection except within one final piece of its ends.
+TEST(TrianglePairCcdOracle, DetectorSettingsOnPassingTriangles) {
+  std::mt19937 rng(1618);
+  std::uniform_real_distribution<double> coord(-1, 1);
+  constexpr double kPiece = 1.0 / 32;
+  int whole = 0, partial = 0;
+  for (int trial = 0; trial < 600; ++trial) {
+    RandomPair p;
+    const Vector3d a_motion = 0.2 * Vector3d(coord(rng), coord(rng), coord(rng));
+    // A third of the pairs move nearly together: intersecting (or not) all along.
+    const bool together = trial % 3 == 0;
+    const Vector3d b_motion = together ? Vector3d(a_motion + 0.002 * Vector3d(coord(rng), coord(rng), coord(rng)))
+                                       : Vector3d(0.2 * Vector3d(coord(rng), coord(rng), coord(rng)));
+    const Vector3d a_center = 0.05 * Vector3d(coord(rng), coord(rng), coord(rng)) - a_motion / 2;
+    const Vector3d b_center = together ? Vector3d(a_center + 0.01 * Vector3d(coord(rng), coord(rng), coord(rng)))
+                                       : Vector3d(0.05 * Vector3d(coord(rng), coord(rng), coord(rng)) - b_motion / 2);
+    // A little rotation: the vertices do not all move alike.
+    const double turn = together ? 0.0 : 0.05 * coord(rng);
+    for (int k = 0; k < 3; ++k) {
+      const Vector3d da = 0.03 * Vector3d(coord(rng), coord(rng), coord(rng));
+      const Vector3d db = 0.03 * Vector3d(coord(rng), coord(rng), coord(rng));
+      p.a0[k] = a_center + da;
+      p.a1[k] = a_center + a_motion + da + turn * Vector3d(-da.y(), da.x(), 0);
+      p.b0[k] = b_center + db;
+      p.b1[k] = b_center + b_motion + db;
+    }
+    TrianglePairCcdRequest req = request(p.a0, p.a1, p.b0, p.b1);
+    req.time_tolerance = kPiece;
+    req.distance_tolerance = 1e-4;
+    const TrianglePairCcdResult r = triangle_pair_ccd(req);
+    EXPECT_FALSE(r.budget_exhausted);
+    const bool one_status = r.pieces == 1;  // decided by one static test, no contact possible
+    int sampled = 0;
+    for (int k = 0; k <= kSteps; ++k) {
+      const double t = static_cast<double>(k) / kSteps;
+      const bool hit = sampled_hit(p, k);
+      sampled += hit;
+      if (hit) {
+        ASSERT_TRUE(r.contains(t)) << "trial " << trial << " t " << t;
+      }
+      if (one_status) {
+        EXPECT_EQ(hit, r.any()) << "trial " << trial << " t " << t;
+      }
+      const bool deep = std::any_of(r.intervals.begin(), r.intervals.end(), [&](const TimeInterval& i) {
+        return i.lo + kPiece < t && t < i.hi - kPiece;
+      });
+      if (deep) {
+        EXPECT_TRUE(hit) << "trial " << trial << " t " << t;
+      }
+    }
+    whole += one_status && r.any();
+    partial += sampled > 0 && sampled <= kSteps;
+  }
+  EXPECT_GT(whole, 5) << partial;
+  EXPECT_GT(partial, 40) << whole;
+}
+
 }  // namespace
 }  // namespace reconfig::collision

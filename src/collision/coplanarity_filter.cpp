@@ -1,0 +1,62 @@
+#include "reconfig/collision/coplanarity_filter.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+
+namespace reconfig::collision {
+namespace {
+
+constexpr double kEpsilon = 0x1p-53;
+
+double det(const double x[3], const double y[3], const double z[3]) {
+  return x[0] * (y[1] * z[2] - y[2] * z[1]) + x[1] * (y[2] * z[0] - y[0] * z[2]) + x[2] * (y[0] * z[1] - y[1] * z[0]);
+}
+
+}  // namespace
+
+/// Error analysis (ε = 2^-53, M = largest |input coordinate|, first-order terms; the final
+/// doubling absorbs the rest). Positions x(t) = x0 + t (x1 − x0) are computed within 6εM, so
+/// the difference vectors within 15εM of their exact values; the robust perturbation moves
+/// them by ≤ 2 · 6εM more. With D' ≥ every |component| of the exact, computed and perturbed
+/// vectors, a determinant (6 products of 3 components) changes by ≤ 18 D'² δ when every
+/// component moves by ≤ δ: ≤ 270 εM D'² from the computed inputs, ≤ 216 εM D'² from the
+/// perturbation (the cubic at every t ∈ [t_min, t_max], a convex combination of exact
+/// coefficients, stays within that of its exact value). Evaluating a determinant as x · (y × z)
+/// costs ≤ 30 εD'³, an average of three ≤ 48 εD'³. So a computed coefficient differs from the
+/// perturbed cubic's coefficient by ≤ 64 εD'³ + 512 εM D'², doubled below; the guard covers
+/// underflow (≤ 2^-1074 per operation). The end coefficients are the cubic's values at the ends.
+Coplanarity coplanarity(const MovingPoints& points, double t_min, double t_max) {
+  assert(0 <= t_min && t_min <= t_max && t_max <= 1);
+  double m = 0;
+  for (int k = 0; k < 4; ++k) m = std::max({m, points.start[k].cwiseAbs().maxCoeff(), points.end[k].cwiseAbs().maxCoeff()});
+  if (!(m < 0x1p300)) return Coplanarity::kAtAnEnd;  // also NaN
+
+  // Difference vectors v[end][j] = x_{j+1} − x_0 at t_min (end 0) and t_max (end 1).
+  double v[2][3][3];
+  double d = 0;
+  for (int e = 0; e < 2; ++e) {
+    const double t = e == 0 ? t_min : t_max;
+    double x[4][3];
+    for (int k = 0; k < 4; ++k)
+      for (int i = 0; i < 3; ++i) x[k][i] = points.start[k][i] + t * (points.end[k][i] - points.start[k][i]);
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < 3; ++i) {
+        v[e][j][i] = x[j + 1][i] - x[0][i];
+        d = std::max(d, std::abs(v[e][j][i]));
+      }
+  }
+  const double dp = d + 32 * kEpsilon * m;
+  const double bound = 2 * (64 * kEpsilon * dp * dp * dp + 512 * kEpsilon * m * dp * dp) + 0x1p-1000;
+
+  const auto& [x0, y0, z0] = v[0];
+  const auto& [x1, y1, z1] = v[1];
+  const double b[4] = {det(x0, y0, z0), (det(x1, y0, z0) + det(x0, y1, z0) + det(x0, y0, z1)) / 3,
+                       (det(x0, y1, z1) + det(x1, y0, z1) + det(x1, y1, z0)) / 3, det(x1, y1, z1)};
+  if (!(std::abs(b[0]) > bound && std::abs(b[3]) > bound)) return Coplanarity::kAtAnEnd;
+  const bool positive = b[0] > bound && b[1] > bound && b[2] > bound && b[3] > bound;
+  const bool negative = b[0] < -bound && b[1] < -bound && b[2] < -bound && b[3] < -bound;
+  return positive || negative ? Coplanarity::kNever : Coplanarity::kInside;
+}
+
+}  // namespace reconfig::collision
