@@ -1,12 +1,23 @@
 #include "reconfig/collision/collision_service.h"
 
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <tbb/task_arena.h>
+#include <unistd.h>
+
 #include "reconfig/collision/consolidate.h"
 
 namespace reconfig::collision {
 
 CollisionService::CollisionService(CollisionServiceOptions options)
     : options_(options), snapshot_(std::make_shared<CollisionSnapshot>()) {
-  worker_ = std::thread([this] { run(); });
+  worker_ = std::thread([this] {
+    if (options_.background_priority) setpriority(PRIO_PROCESS, static_cast<id_t>(::syscall(SYS_gettid)), 10);
+    // With a limited arena every parallel loop of the detection runs on this (niced) thread
+    // and at most max_threads − 1 others.
+    tbb::task_arena arena(options_.max_threads > 0 ? options_.max_threads : tbb::task_arena::automatic);
+    arena.execute([this] { run(); });
+  });
 }
 
 CollisionService::~CollisionService() {

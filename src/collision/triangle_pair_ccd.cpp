@@ -7,7 +7,7 @@
 #include <deque>
 
 #include "reconfig/collision/ccd_primitives.h"
-#include "reconfig/collision/coplanarity_filter.h"
+#include "reconfig/collision/coplanarity_cubic.h"
 #include "reconfig/geometry/triangle_intersection.h"
 
 namespace reconfig::collision {
@@ -20,11 +20,16 @@ constexpr unsigned kAllTests = (1u << kContactTests) - 1;
 /// Pieces longer than this (fraction of the step) are split wherever the coplanarity filter
 /// cannot exclude a contact, without running the contact tests.
 constexpr double kScreenedWidth = 1.0 / 32;
+/// Boxes a contact test may examine over the whole step before it is left to the halving:
+/// enough to exclude a primitive pair that passes far from contact.
+constexpr int kGlanceBoxes = 4;
 
-/// A piece of the (normalized) step and the contact tests that may still fire on it.
+/// A piece of the (normalized) step, the contact tests that may still fire on it and their
+/// coplanarity cubics over it.
 struct Piece {
   double lo, hi;
   unsigned tests;
+  std::array<CoplanarityCubic, kContactTests> cubics;
 };
 
 struct Motion {
@@ -96,27 +101,30 @@ TrianglePairCcdResult triangle_pair_ccd(const TrianglePairCcdRequest& request) {
   const double box_margin = 4 * kRobustPerturbation * scale + 0x1p-1000;
 
   // Contact tests whose points never become coplanar on a piece are skipped outright
-  // (`coplanarity_filter.h`). A long piece where some may (strictly inside it) is halved
+  // (`coplanarity_cubic.h`). A long piece where some may (strictly inside it) is halved
   // without running them (a contact test that finds its contact costs far more than a
-  // halving); below `kScreenedWidth` they decide, as they stop the refinement around false
-  // roots.
-  std::array<MovingPoints, kContactTests> points;
+  // halving) after a glance at the whole step; below `kScreenedWidth` they decide, as they
+  // stop the refinement around false roots.
+  std::deque<Piece> queue{{0.0, 1.0, kAllTests, {}}};
   for (int index = 0; index < kContactTests; ++index) {
     const std::array<int, 4> vertices = test_vertices(index);
+    MovingPoints points;
     for (int k = 0; k < 4; ++k) {
-      points[index].start[k] = motion.start[vertices[k]];
-      points[index].end[k] = motion.end[vertices[k]];
+      points.start[k] = motion.start[vertices[k]];
+      points.end[k] = motion.end[vertices[k]];
     }
+    queue.front().cubics[index] = CoplanarityCubic(points, 0, 1);
   }
   PrimitiveCcdOptions options;
   options.tolerance = request.distance_tolerance;
   options.max_boxes = request.max_boxes;
   options.earliest = false;  // only whether, not when: the bisection finds the times
+  PrimitiveCcdOptions glance = options;
+  glance.max_boxes = 6;
 
   std::vector<TimeInterval> found;  // in normalized time
-  std::deque<Piece> queue{{0.0, 1.0, kAllTests}};
   while (!queue.empty()) {
-    const Piece piece = queue.front();
+    const Piece piece = std::move(queue.front());
     queue.pop_front();
     ++result.pieces;
     if (boxes_apart(motion, piece.lo, piece.hi, box_margin)) continue;  // apart throughout
@@ -124,7 +132,7 @@ TrianglePairCcdResult triangle_pair_ccd(const TrianglePairCcdRequest& request) {
     unsigned coplanar = 0, at_an_end = 0;
     for (int index = 0; index < kContactTests; ++index) {
       if (!(piece.tests & (1u << index))) continue;
-      const Coplanarity c = coplanarity(points[index], piece.lo, piece.hi);
+      const Coplanarity c = piece.cubics[index].classify();
       if (c != Coplanarity::kNever) coplanar |= 1u << index;
       if (c == Coplanarity::kAtAnEnd) at_an_end |= 1u << index;
     }
@@ -156,6 +164,12 @@ TrianglePairCcdResult triangle_pair_ccd(const TrianglePairCcdRequest& request) {
       ++result.contact_tests;
       if (may_touch(motion, index, piece.lo, piece.hi, options)) firing |= 1u << index;
     }
+    if (piece.lo == 0 && piece.hi == 1)  // a glance at the whole step: out of budget is "may"
+      for (int index = 0; index < kContactTests; ++index) {
+        if (!(firing & ~screened & (1u << index))) continue;
+        ++result.contact_tests;
+        if (!may_touch(motion, index, 0, 1, glance)) firing &= ~(1u << index);
+      }
     if (firing == 0) {
       // No contact anywhere on the closed piece: one status throughout, robust to rounding.
       if (intersect_at(motion, mid)) found.push_back({piece.lo, piece.hi});
@@ -166,8 +180,14 @@ TrianglePairCcdResult triangle_pair_ccd(const TrianglePairCcdRequest& request) {
       found.push_back({piece.lo, piece.hi});
       continue;
     }
-    queue.push_back({piece.lo, mid, firing});
-    queue.push_back({mid, piece.hi, firing});
+    Piece& first = queue.emplace_back(piece.lo, mid, firing);
+    Piece& second = queue.emplace_back(mid, piece.hi, firing);
+    for (int index = 0; index < kContactTests; ++index)
+      if (firing & (1u << index)) {
+        const std::array<CoplanarityCubic, 2> halves = piece.cubics[index].halves();
+        first.cubics[index] = halves[0];
+        second.cubics[index] = halves[1];
+      }
   }
 
   std::sort(found.begin(), found.end(), [](const TimeInterval& x, const TimeInterval& y) { return x.lo < y.lo; });

@@ -1,4 +1,4 @@
-#include "reconfig/collision/coplanarity_filter.h"
+#include "reconfig/collision/coplanarity_cubic.h"
 
 #include <algorithm>
 #include <cassert>
@@ -26,11 +26,14 @@ double det(const double x[3], const double y[3], const double z[3]) {
 /// costs ≤ 30 εD'³, an average of three ≤ 48 εD'³. So a computed coefficient differs from the
 /// perturbed cubic's coefficient by ≤ 64 εD'³ + 512 εM D'², doubled below; the guard covers
 /// underflow (≤ 2^-1074 per operation). The end coefficients are the cubic's values at the ends.
-Coplanarity coplanarity(const MovingPoints& points, double t_min, double t_max) {
+CoplanarityCubic::CoplanarityCubic(const MovingPoints& points, double t_min, double t_max) {
   assert(0 <= t_min && t_min <= t_max && t_max <= 1);
   double m = 0;
   for (int k = 0; k < 4; ++k) m = std::max({m, points.start[k].cwiseAbs().maxCoeff(), points.end[k].cwiseAbs().maxCoeff()});
-  if (!(m < 0x1p300)) return Coplanarity::kAtAnEnd;  // also NaN
+  if (!(m < 0x1p300)) {  // also NaN
+    error_ = HUGE_VAL;
+    return;
+  }
 
   // Difference vectors v[end][j] = x_{j+1} − x_0 at t_min (end 0) and t_max (end 1).
   double v[2][3][3];
@@ -47,16 +50,37 @@ Coplanarity coplanarity(const MovingPoints& points, double t_min, double t_max) 
       }
   }
   const double dp = d + 32 * kEpsilon * m;
-  const double bound = 2 * (64 * kEpsilon * dp * dp * dp + 512 * kEpsilon * m * dp * dp) + 0x1p-1000;
+  error_ = 2 * (64 * kEpsilon * dp * dp * dp + 512 * kEpsilon * m * dp * dp) + 0x1p-1000;
 
   const auto& [x0, y0, z0] = v[0];
   const auto& [x1, y1, z1] = v[1];
-  const double b[4] = {det(x0, y0, z0), (det(x1, y0, z0) + det(x0, y1, z0) + det(x0, y0, z1)) / 3,
-                       (det(x0, y1, z1) + det(x1, y0, z1) + det(x1, y1, z0)) / 3, det(x1, y1, z1)};
-  if (!(std::abs(b[0]) > bound && std::abs(b[3]) > bound)) return Coplanarity::kAtAnEnd;
-  const bool positive = b[0] > bound && b[1] > bound && b[2] > bound && b[3] > bound;
-  const bool negative = b[0] < -bound && b[1] < -bound && b[2] < -bound && b[3] < -bound;
+  coefficients_ = {det(x0, y0, z0), (det(x1, y0, z0) + det(x0, y1, z0) + det(x0, y0, z1)) / 3,
+                   (det(x0, y1, z1) + det(x1, y0, z1) + det(x1, y1, z0)) / 3, det(x1, y1, z1)};
+}
+
+Coplanarity CoplanarityCubic::classify() const {
+  const auto& b = coefficients_;
+  const double e = error_;
+  if (!(std::abs(b[0]) > e && std::abs(b[3]) > e)) return Coplanarity::kAtAnEnd;
+  const bool positive = b[0] > e && b[1] > e && b[2] > e && b[3] > e;
+  const bool negative = b[0] < -e && b[1] < -e && b[2] < -e && b[3] < -e;
   return positive || negative ? Coplanarity::kNever : Coplanarity::kInside;
+}
+
+/// De Casteljau at 1/2: every new coefficient is a chain of at most three midpoints of
+/// values bounded by B = max |b_i|, each rounded by ≤ εB; the exact halves' coefficients are
+/// the same midpoints of the exact coefficients, so the error grows by ≤ 3εB (4εB below).
+std::array<CoplanarityCubic, 2> CoplanarityCubic::halves() const {
+  const auto& b = coefficients_;
+  const double b01 = 0.5 * (b[0] + b[1]), b12 = 0.5 * (b[1] + b[2]), b23 = 0.5 * (b[2] + b[3]);
+  const double b012 = 0.5 * (b01 + b12), b123 = 0.5 * (b12 + b23);
+  const double middle = 0.5 * (b012 + b123);
+  const double largest = std::max({std::abs(b[0]), std::abs(b[1]), std::abs(b[2]), std::abs(b[3])});
+  std::array<CoplanarityCubic, 2> halves;
+  halves[0].coefficients_ = {b[0], b01, b012, middle};
+  halves[1].coefficients_ = {middle, b123, b23, b[3]};
+  halves[0].error_ = halves[1].error_ = error_ + 4 * kEpsilon * largest + 0x1p-1000;
+  return halves;
 }
 
 }  // namespace reconfig::collision
