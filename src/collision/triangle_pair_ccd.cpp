@@ -119,8 +119,8 @@ TrianglePairCcdResult triangle_pair_ccd(const TrianglePairCcdRequest& request) {
   options.tolerance = request.distance_tolerance;
   options.max_boxes = request.max_boxes;
   options.earliest = false;  // only whether, not when: the bisection finds the times
-  PrimitiveCcdOptions glance = options;
-  glance.max_boxes = 6;
+  PrimitiveCcdOptions glance = options;  // on the whole step: drops far misses at once
+  glance.max_boxes = kGlanceBoxes;
 
   std::vector<TimeInterval> found;  // in normalized time
   while (!queue.empty()) {
