@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
-#include <deque>
 
 #include "reconfig/collision/ccd_primitives.h"
 #include "reconfig/collision/coplanarity_cubic.h"
@@ -105,7 +104,13 @@ TrianglePairCcdResult triangle_pair_ccd(const TrianglePairCcdRequest& request) {
   // without running them (a contact test that finds its contact costs far more than a
   // halving) after a glance at the whole step; below `kScreenedWidth` they decide, as they
   // stop the refinement around false roots.
-  std::deque<Piece> queue{{0.0, 1.0, kAllTests, {}}};
+  if (boxes_apart(motion, 0, 1, box_margin)) {  // apart throughout: no cubic needed
+    result.pieces = 1;
+    return result;
+  }
+  // First in, first out (coarsest pieces first); `queue[next]` is the next piece.
+  std::vector<Piece> queue(1, Piece{0.0, 1.0, kAllTests, {}});
+  std::size_t next = 0;
   for (int index = 0; index < kContactTests; ++index) {
     const std::array<int, 4> vertices = test_vertices(index);
     MovingPoints points;
@@ -123,9 +128,8 @@ TrianglePairCcdResult triangle_pair_ccd(const TrianglePairCcdRequest& request) {
   glance.max_boxes = kGlanceBoxes;
 
   std::vector<TimeInterval> found;  // in normalized time
-  while (!queue.empty()) {
-    const Piece piece = std::move(queue.front());
-    queue.pop_front();
+  while (next < queue.size()) {
+    const Piece piece = queue[next++];
     ++result.pieces;
     if (boxes_apart(motion, piece.lo, piece.hi, box_margin)) continue;  // apart throughout
 
@@ -175,19 +179,20 @@ TrianglePairCcdResult triangle_pair_ccd(const TrianglePairCcdRequest& request) {
       if (intersect_at(motion, mid)) found.push_back({piece.lo, piece.hi});
       continue;
     }
-    if (result.pieces + static_cast<int>(queue.size()) >= request.max_pieces) {
+    if (static_cast<int>(queue.size()) >= request.max_pieces) {
       result.budget_exhausted = true;
       found.push_back({piece.lo, piece.hi});
       continue;
     }
-    Piece& first = queue.emplace_back(piece.lo, mid, firing);
-    Piece& second = queue.emplace_back(mid, piece.hi, firing);
+    Piece first{piece.lo, mid, firing, {}}, second{mid, piece.hi, firing, {}};
     for (int index = 0; index < kContactTests; ++index)
       if (firing & (1u << index)) {
         const std::array<CoplanarityCubic, 2> halves = piece.cubics[index].halves();
         first.cubics[index] = halves[0];
         second.cubics[index] = halves[1];
       }
+    queue.push_back(first);
+    queue.push_back(second);
   }
 
   std::sort(found.begin(), found.end(), [](const TimeInterval& x, const TimeInterval& y) { return x.lo < y.lo; });
