@@ -19,6 +19,7 @@
 #include "reconfig/linkage/symbolic_kinematics.h"
 #include "reconfig/scene/edits.h"
 #include "reconfig/scene/history.h"
+#include "reconfig/scene/linkage_drive_edits.h"
 #include "reconfig/scene/scene_file.h"
 #include "reconfig/scene/validate_scene.h"
 #include "support/test_data.h"
@@ -309,7 +310,7 @@ INSTANTIATE_TEST_SUITE_P(
                  "transitions[0].linkage.motor", "cannot turn from -130.0° to -90.0°: the linkage rocks between"},
         BadDrive{"UnknownState", [](json& d) { d["transitions"][0]["to"] = "nowhere"; }, "transitions[0].to",
                  "unknown state \"nowhere\""}),
-    [](const ::testing::TestParamInfo<BadDrive>& info) { return info.param.what; });
+    [](const ::testing::TestParamInfo<BadDrive>& param_info) { return param_info.param.what; });
 
 TEST(LinkageDrive, ARockingLinkageMayTurnWithinItsRange) {
   json document = driven_scene();
@@ -372,6 +373,50 @@ TEST(LinkageDrive, RecompilingAfterEditingTheDrive) {
 TEST(LinkageDrive, PosesOfAPartThatIsNotDrivenAreRefused) {
   const Reconfigurable scene = parse(driven_scene());
   EXPECT_THROW(linkage_drive_poses(scene, 0, scene.find_part("ball"), {0.5}), InputError);
+}
+
+}  // namespace
+}  // namespace reconfig::scene
+
+namespace reconfig::scene {
+namespace {
+
+TEST(LinkageDriveEdits, SetLinkageDriveIsUndoable) {
+  Reconfigurable scene = parse(driven_scene());
+  const std::string before = scene_to_json(scene, linkages_dir());
+  LinkageDrive drive = *scene.transitions[0].linkage;
+  drive.to = 225;
+  drive.attach.pop_back();  // the rocker is no longer carried ...
+  drive.attach.push_back({"ball", "D", "C", {}});  // ... and the ball rides on the rocker
+  History history;
+  // The rocker's state poses (45° and 315°) now differ while it has no track: refused as a whole.
+  EXPECT_THROW(history.execute(scene, set_linkage_drive("turn", drive)), InputError);
+  EXPECT_EQ(scene_to_json(scene, linkages_dir()), before);
+
+  drive.attach.front().offset.translation.z() = 0.005;
+  drive.attach.pop_back();
+  drive.attach.push_back({"rocker", "D", "C", {}});
+  const DirtySet dirty = history.execute(scene, set_linkage_drive("turn", drive));
+  EXPECT_EQ(dirty.ranges.size(), 3u);  // crank, coupler, rocker over the whole transition
+  const std::string after = scene_to_json(scene, linkages_dir());
+  EXPECT_NE(after, before);
+  EXPECT_EQ(json::parse(after)["transitions"][0]["linkage"]["motor"]["to"], 225.0);
+  EXPECT_LE(measured_deviation(scene, 0, 2000), 1e-4);
+  // The end state follows the drive.
+  EXPECT_TRUE(poses_match(scene.states[1].pose_of("crank"),
+                          std::get<ScrewPosesTrack>(scene.transitions[0].tracks.at("crank")).poses.back().pose));
+  history.undo(scene);
+  EXPECT_EQ(scene_to_json(scene, linkages_dir()), before);
+  history.redo(scene);
+  EXPECT_EQ(scene_to_json(scene, linkages_dir()), after);
+
+  // Removing the drive keeps the motion as plain screw tracks.
+  history.execute(scene, set_linkage_drive("turn", std::nullopt));
+  EXPECT_FALSE(scene.transitions[0].linkage);
+  const json saved = json::parse(scene_to_json(scene, linkages_dir()));
+  EXPECT_EQ(saved["transitions"][0]["tracks"]["crank"]["interpolation"], "screw");
+  EXPECT_NO_THROW(parse(saved));
+  EXPECT_THROW(history.execute(scene, set_linkage_drive("nowhere", drive)), InputError);
 }
 
 }  // namespace
