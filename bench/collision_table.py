@@ -52,5 +52,30 @@ def main(path):
               f"| {fmt_ratio(row.get('engine_vs_fcl_all_contacts'))} | {hits} |")
 
 
+def dop_work(report):
+    """Work counts of the full detection per DOP family: bound tests / narrow-phase tests (these
+    do not depend on the machine's load)."""
+    work = {}
+    for b in report["benchmarks"]:
+        parts = b["name"].split("/")
+        if parts[0] != "BM_FullDetection":
+            continue
+        fields = dict(p.split(":", 1) for p in parts[1:] if ":" in p)
+        work.setdefault(fields["scene"], {})[fields.get("dop", "28")] = (b.get("bound_tests"), b.get("narrow_phase"),
+                                                                          b.get("contacts"))
+    print()
+    print("| # | 28-DOP: bound tests / narrow-phase tests | 8-DOP | 80-DOP | contacts |")
+    print("|---|---|---|---|---|")
+    for scene, by_dop in work.items():
+        cells = []
+        for dop in ("28", "8", "80"):
+            w = by_dop.get(dop)
+            cells.append("—" if w is None else f"{w[0]:,.0f} / {w[1]:,.0f}")
+        contacts = by_dop.get("28", (None, None, None))[2]
+        print(f"| {scene} | {' | '.join(cells)} | {'—' if contacts is None else f'{contacts:,.0f}'} |")
+
+
 if __name__ == "__main__":
-    main(sys.argv[1] if len(sys.argv) > 1 else "/dev/stdin")
+    path = sys.argv[1] if len(sys.argv) > 1 else "/dev/stdin"
+    main(path)
+    dop_work(json.load(open(path)))
