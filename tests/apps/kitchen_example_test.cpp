@@ -70,7 +70,7 @@ TEST(KitchenExampleFile, HasMoreThanTwentyParts) {
 }
 
 TEST(KitchenExampleFile, ConservativeModeFindsNoNearMissInTheCarefulChoreographies) {
-  // Every clearance of the careful choreographies is ≥ 4 mm, far above the 1 mm tolerance.
+  // The careful choreographies keep every clearance ≥ 2 mm, above the 1 mm tolerance.
   const auto run = run_reconfig("check " + kitchen() + " --conservative --transition open --transition dining");
   EXPECT_EQ(run.exit_code, 0) << run.out << run.err;
 }
