@@ -2,6 +2,7 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <bit>
 #include <cassert>
 #include <cmath>
 
@@ -23,12 +24,13 @@ constexpr double kScreenedWidth = 1.0 / 32;
 /// enough to exclude a primitive pair that passes far from contact.
 constexpr int kGlanceBoxes = 4;
 
-/// A piece of the (normalized) step, the contact tests that may still fire on it and their
-/// coplanarity cubics over it.
+/// A piece of the (normalized) step, the contact tests that may still fire on it and where
+/// their coplanarity cubics over it are stored: one per test, in the order of the tests,
+/// from index `first_cubic` on.
 struct Piece {
   double lo, hi;
   unsigned tests;
-  std::array<CoplanarityCubic, kContactTests> cubics;
+  std::size_t first_cubic;
 };
 
 struct Motion {
@@ -109,8 +111,10 @@ TrianglePairCcdResult triangle_pair_ccd(const TrianglePairCcdRequest& request) {
     return result;
   }
   // First in, first out (coarsest pieces first); `queue[next]` is the next piece.
-  std::vector<Piece> queue(1, Piece{0.0, 1.0, kAllTests, {}});
+  std::vector<Piece> queue(1, Piece{0.0, 1.0, kAllTests, 0});
   std::size_t next = 0;
+  std::vector<CoplanarityCubic> cubics;
+  cubics.reserve(4 * kContactTests);
   for (int index = 0; index < kContactTests; ++index) {
     const std::array<int, 4> vertices = test_vertices(index);
     MovingPoints points;
@@ -118,7 +122,7 @@ TrianglePairCcdResult triangle_pair_ccd(const TrianglePairCcdRequest& request) {
       points.start[k] = motion.start[vertices[k]];
       points.end[k] = motion.end[vertices[k]];
     }
-    queue.front().cubics[index] = CoplanarityCubic(points, 0, 1);
+    cubics.emplace_back(points, 0, 1);
   }
   PrimitiveCcdOptions options;
   options.tolerance = request.distance_tolerance;
@@ -133,10 +137,13 @@ TrianglePairCcdResult triangle_pair_ccd(const TrianglePairCcdRequest& request) {
     ++result.pieces;
     if (boxes_apart(motion, piece.lo, piece.hi, box_margin)) continue;  // apart throughout
 
+    const auto cubic_of = [&](int index) -> const CoplanarityCubic& {
+      return cubics[piece.first_cubic + std::popcount(piece.tests & ((1u << index) - 1))];
+    };
     unsigned coplanar = 0, at_an_end = 0;
     for (int index = 0; index < kContactTests; ++index) {
       if (!(piece.tests & (1u << index))) continue;
-      const Coplanarity c = piece.cubics[index].classify();
+      const Coplanarity c = cubic_of(index).classify();
       if (c != Coplanarity::kNever) coplanar |= 1u << index;
       if (c == Coplanarity::kAtAnEnd) at_an_end |= 1u << index;
     }
@@ -184,15 +191,18 @@ TrianglePairCcdResult triangle_pair_ccd(const TrianglePairCcdRequest& request) {
       found.push_back({piece.lo, piece.hi});
       continue;
     }
-    Piece first{piece.lo, mid, firing, {}}, second{mid, piece.hi, firing, {}};
+    const std::size_t count = std::popcount(firing);
+    queue.push_back({piece.lo, mid, firing, cubics.size()});
+    queue.push_back({mid, piece.hi, firing, cubics.size() + count});
+    cubics.resize(cubics.size() + 2 * count);
+    std::size_t rank = 0;
     for (int index = 0; index < kContactTests; ++index)
       if (firing & (1u << index)) {
-        const std::array<CoplanarityCubic, 2> halves = piece.cubics[index].halves();
-        first.cubics[index] = halves[0];
-        second.cubics[index] = halves[1];
+        const std::array<CoplanarityCubic, 2> halves = cubic_of(index).halves();
+        cubics[queue.back().first_cubic - count + rank] = halves[0];
+        cubics[queue.back().first_cubic + rank] = halves[1];
+        ++rank;
       }
-    queue.push_back(first);
-    queue.push_back(second);
   }
 
   std::sort(found.begin(), found.end(), [](const TimeInterval& x, const TimeInterval& y) { return x.lo < y.lo; });
