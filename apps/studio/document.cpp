@@ -30,6 +30,13 @@ Document::Document(scene::Reconfigurable scene, fs::path file, collision::Collis
 
 void Document::publish(std::shared_ptr<const scene::Reconfigurable> next, const scene::DirtySet& dirty) {
   scene_ = std::move(next);
+  const auto share = [&](int part) { return std::make_shared<const geometry::Mesh>(scene_->parts[part].mesh); };
+  if (dirty.structure_changed || part_meshes_.size() != scene_->parts.size()) {
+    part_meshes_.clear();
+    for (int part = 0; part < static_cast<int>(scene_->parts.size()); ++part) part_meshes_.push_back(share(part));
+  } else {
+    for (const int part : dirty.geometry_changed) part_meshes_[part] = share(part);
+  }
   version_ = service_->submit(scene_, dirty);
 }
 

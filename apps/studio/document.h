@@ -61,6 +61,11 @@ class Document {
   /// Whether `file` has an autosave newer than itself (unsaved work from a crash).
   static bool has_recovery(const std::filesystem::path& file);
 
+  /// The parts' rest meshes as shared objects (for drawing them GPU-resident): replaced only
+  /// when an edit changes a part's geometry or the list of parts, so they outlive edits of
+  /// poses and keys.
+  const std::vector<std::shared_ptr<const geometry::Mesh>>& part_meshes() const { return part_meshes_; }
+
   const collision::CollisionService& collisions() const { return *service_; }
   /// The version number of the current scene as submitted to the collision service.
   std::uint64_t version() const { return version_; }
@@ -69,6 +74,7 @@ class Document {
   void publish(std::shared_ptr<const scene::Reconfigurable> next, const scene::DirtySet& dirty);
 
   std::shared_ptr<const scene::Reconfigurable> scene_;
+  std::vector<std::shared_ptr<const geometry::Mesh>> part_meshes_;
   std::filesystem::path file_;
   scene::History history_;
   std::unique_ptr<collision::CollisionService> service_;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <system_error>
+#include <thread>
 
 #include "keys.h"
 #include "panel_window.h"
@@ -14,6 +15,13 @@
 namespace reconfig::studio {
 
 namespace fs = std::filesystem;
+
+collision::CollisionServiceOptions editor_collision_options() {
+  collision::CollisionServiceOptions options;
+  options.max_threads = std::max(1, static_cast<int>(std::thread::hardware_concurrency()) - 1);
+  options.background_priority = true;
+  return options;
+}
 
 Studio::Studio(StudioOptions options) : options_(std::move(options)), renderer_(render::RendererOptions{0}) {}
 

@@ -41,10 +41,14 @@ struct Layout {
   float bands_row_y = 0;                             ///< collision bands' center
 };
 
+/// Collision service settings for an editor: detection leaves one core to the UI and runs at a
+/// lower priority, so frames keep coming while it works.
+collision::CollisionServiceOptions editor_collision_options();
+
 struct StudioOptions {
   std::chrono::milliseconds autosave_interval{3000};
   double play_speed = 0.25;  ///< transition time per second while playing
-  collision::CollisionServiceOptions collisions;
+  collision::CollisionServiceOptions collisions = editor_collision_options();
 };
 
 class Studio {

@@ -69,6 +69,7 @@ void Studio::render_viewport_image(int width, int height) {
     request.state = active_state_;
     if (selected_part_ >= 0) request.selected = {selected_part_};
     if (drag_preview_ && selected_part_ >= 0) request.pose_overrides = {{selected_part_, *drag_preview_}};
+    request.resident_meshes = document_->part_meshes();
     if (active_transition_ >= 0) {
       if (show_ghosts) {
         view::GhostRequest ghosts;

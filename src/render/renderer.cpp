@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <stdexcept>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace reconfig::render {
@@ -18,11 +19,12 @@ namespace {
 // shading without duplicating vertices, and always facing the viewer (two-sided).
 constexpr const char* kSurfaceVertex = R"(#version 330 core
 layout(location = 0) in vec3 position;
+uniform mat4 model;
 uniform mat4 view;
 uniform mat4 projection;
 out vec3 eye_position;
 void main() {
-  vec4 p = view * vec4(position, 1.0);
+  vec4 p = view * (model * vec4(position, 1.0));
   eye_position = p.xyz;
   gl_Position = projection * p;
 }
@@ -145,7 +147,8 @@ void check_gl(const char* during) {
 
 struct Renderer::Impl {
   GLuint surface_program = 0, flat_program = 0;
-  GLint surface_view = -1, surface_projection = -1, surface_color = -1, surface_opacity = -1, surface_highlighted = -1;
+  GLint surface_model = -1, surface_view = -1, surface_projection = -1, surface_color = -1, surface_opacity = -1,
+        surface_highlighted = -1;
   GLint flat_view_projection = -1;
   GLuint mesh_vao = 0, mesh_vbo = 0, mesh_ebo = 0;
   GLuint flat_vao = 0, flat_vbo = 0;
@@ -154,7 +157,17 @@ struct Renderer::Impl {
   int fbo_width = 0, fbo_height = 0;
   int samples = 0;
 
+  /// Rest meshes kept on the GPU, by object; an entry whose object died is released.
+  struct ResidentMesh {
+    std::weak_ptr<const geometry::Mesh> owner;
+    GLuint vao = 0, vbo = 0, ebo = 0;
+    GLsizei indices = 0;
+  };
+  std::unordered_map<const geometry::Mesh*, ResidentMesh> resident;
+
   void ensure_targets(int width, int height);
+  const ResidentMesh& make_resident(const std::shared_ptr<const geometry::Mesh>& mesh);
+  void release_dead_meshes();
   void draw_mesh(const MeshItem& mesh);
   void draw_mesh(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, const Eigen::Vector3f& color, float opacity,
                  bool highlighted);
@@ -165,6 +178,7 @@ struct Renderer::Impl {
 Renderer::Renderer(const RendererOptions& options) : impl_(std::make_unique<Impl>()) {
   Impl& r = *impl_;
   r.surface_program = link(kSurfaceVertex, kSurfaceFragment);
+  r.surface_model = glGetUniformLocation(r.surface_program, "model");
   r.surface_view = glGetUniformLocation(r.surface_program, "view");
   r.surface_projection = glGetUniformLocation(r.surface_program, "projection");
   r.surface_color = glGetUniformLocation(r.surface_program, "color");
@@ -201,6 +215,11 @@ Renderer::Renderer(const RendererOptions& options) : impl_(std::make_unique<Impl
 Renderer::~Renderer() {
   Impl& r = *impl_;
   r.release_targets();
+  for (auto& [key, mesh] : r.resident) {
+    glDeleteBuffers(1, &mesh.vbo);
+    glDeleteBuffers(1, &mesh.ebo);
+    glDeleteVertexArrays(1, &mesh.vao);
+  }
   glDeleteBuffers(1, &r.mesh_vbo);
   glDeleteBuffers(1, &r.mesh_ebo);
   glDeleteBuffers(1, &r.flat_vbo);
@@ -264,7 +283,54 @@ void Renderer::Impl::draw_mesh(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i
   glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(indices.size()), GL_UNSIGNED_INT, nullptr);
 }
 
-void Renderer::Impl::draw_mesh(const MeshItem& mesh) { draw_mesh(mesh.V, mesh.F, mesh.color, mesh.opacity, mesh.highlighted); }
+const Renderer::Impl::ResidentMesh& Renderer::Impl::make_resident(const std::shared_ptr<const geometry::Mesh>& mesh) {
+  ResidentMesh& entry = resident[mesh.get()];
+  if (entry.vao && entry.owner.lock() == mesh) return entry;
+  if (!entry.vao) {
+    glGenVertexArrays(1, &entry.vao);
+    glGenBuffers(1, &entry.vbo);
+    glGenBuffers(1, &entry.ebo);
+  }
+  entry.owner = mesh;
+  const Eigen::Matrix<float, Eigen::Dynamic, 3, Eigen::RowMajor> positions = mesh->V.cast<float>();
+  const Eigen::Matrix<unsigned, Eigen::Dynamic, 3, Eigen::RowMajor> indices = mesh->F.cast<unsigned>();
+  glBindVertexArray(entry.vao);
+  glBindBuffer(GL_ARRAY_BUFFER, entry.vbo);
+  glBufferData(GL_ARRAY_BUFFER, positions.size() * sizeof(float), positions.data(), GL_STATIC_DRAW);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, entry.ebo);
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, indices.size() * sizeof(unsigned), indices.data(), GL_STATIC_DRAW);
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), nullptr);
+  entry.indices = static_cast<GLsizei>(indices.size());
+  return entry;
+}
+
+void Renderer::Impl::release_dead_meshes() {
+  std::erase_if(resident, [](const auto& item) {
+    const ResidentMesh& mesh = item.second;
+    if (!mesh.owner.expired()) return false;
+    glDeleteBuffers(1, &mesh.vbo);
+    glDeleteBuffers(1, &mesh.ebo);
+    glDeleteVertexArrays(1, &mesh.vao);
+    return true;
+  });
+}
+
+void Renderer::Impl::draw_mesh(const MeshItem& mesh) {
+  if (!mesh.rest) {
+    glUniformMatrix4fv(surface_model, 1, GL_FALSE, Eigen::Matrix4f::Identity().eval().data());
+    draw_mesh(mesh.V, mesh.F, mesh.color, mesh.opacity, mesh.highlighted);
+    return;
+  }
+  if (mesh.rest->F.rows() == 0) return;
+  const ResidentMesh& gpu = make_resident(mesh.rest);
+  glUniformMatrix4fv(surface_model, 1, GL_FALSE, mesh.placement.matrix().cast<float>().eval().data());
+  glUniform3f(surface_color, mesh.color[0], mesh.color[1], mesh.color[2]);
+  glUniform1f(surface_opacity, mesh.opacity);
+  glUniform1i(surface_highlighted, mesh.highlighted ? 1 : 0);
+  glBindVertexArray(gpu.vao);
+  glDrawElements(GL_TRIANGLES, gpu.indices, GL_UNSIGNED_INT, nullptr);
+}
 
 void Renderer::Impl::draw_flat(const std::vector<ColoredVertex>& vertices, GLenum mode) {
   if (vertices.empty()) return;
@@ -276,6 +342,7 @@ void Renderer::Impl::draw_flat(const std::vector<ColoredVertex>& vertices, GLenu
 
 void Renderer::draw(const DrawList& list, const view::Camera& camera, int width, int height) {
   Impl& r = *impl_;
+  r.release_dead_meshes();
   const double aspect = static_cast<double>(width) / height;
   const Eigen::Matrix4f view = to_float(camera.view_matrix());
   const Eigen::Matrix4f projection = to_float(camera.projection_matrix(aspect));
@@ -354,9 +421,14 @@ void Renderer::draw(const DrawList& list, const view::Camera& camera, int width,
     const BoxItem* box;
   };
   std::vector<Transparent> transparent;
-  for (const MeshItem& mesh : list.meshes)
-    if (mesh.opacity < 1.0f && mesh.V.rows() > 0)
+  for (const MeshItem& mesh : list.meshes) {
+    if (mesh.opacity >= 1.0f) continue;
+    if (mesh.rest && mesh.rest->V.rows() > 0)
+      transparent.push_back(
+          {(mesh.placement * Eigen::Vector3d(mesh.rest->V.colwise().mean().transpose()) - eye).norm(), &mesh, nullptr});
+    else if (!mesh.rest && mesh.V.rows() > 0)
       transparent.push_back({(mesh.V.colwise().mean().transpose() - eye).norm(), &mesh, nullptr});
+  }
   for (const BoxItem& box : list.boxes)
     if (!box.box.isEmpty()) transparent.push_back({(box.box.center() - eye).norm(), nullptr, &box});
   std::stable_sort(transparent.begin(), transparent.end(),

@@ -4,7 +4,6 @@
 #include <cassert>
 #include <cmath>
 
-#include "reconfig/view/scene_bounds.h"
 
 namespace reconfig::render {
 
@@ -23,41 +22,70 @@ double grid_spacing_for(double size) {
   return decade * (mantissa < 1.5 ? 1 : mantissa < 3.5 ? 2 : mantissa < 7.5 ? 5 : 10);
 }
 
+namespace {
+
+/// The box of `mesh`'s rest bounding box corners under `placement` (contains the posed mesh).
+Eigen::AlignedBox3d placed_box(const geometry::Mesh& mesh, const Eigen::Isometry3d& placement) {
+  Eigen::AlignedBox3d rest, placed;
+  for (Eigen::Index v = 0; v < mesh.V.rows(); ++v) rest.extend(Eigen::Vector3d(mesh.V.row(v).transpose()));
+  if (rest.isEmpty()) return placed;
+  for (int corner = 0; corner < 8; ++corner)
+    placed.extend(placement * rest.corner(static_cast<Eigen::AlignedBox3d::CornerType>(corner)));
+  return placed;
+}
+
+}  // namespace
+
 DrawList scene_draw_list(const scene::Reconfigurable& scene, const SceneDrawRequest& request) {
   assert(request.transition >= 0 || request.state >= 0);
   DrawList list;
   const int parts = static_cast<int>(scene.parts.size());
-  auto posed = [&](int part, double t) -> Eigen::MatrixX3d {
+  const bool resident = static_cast<int>(request.resident_meshes.size()) == parts;
+  auto pose_of = [&](int part, double t) {
     for (const auto& [overridden, pose] : request.pose_overrides)
-      if (overridden == part) return scene::posed_part_vertices(scene.parts[part], pose);
-    return request.transition >= 0 ? scene.posed_vertices(request.transition, part, t)
-                                   : scene.posed_vertices_in_state(request.state, part);
+      if (overridden == part) return pose;
+    return request.transition >= 0 ? scene.pose_at(request.transition, part, t)
+                                   : scene.states[request.state].pose_of(scene.parts[part].name);
   };
-  for (int p = 0; p < parts; ++p) {
+  // One part at one pose, either posed here or left to the GPU.
+  auto item_for = [&](int part, const motion::Pose& pose) {
     MeshItem item;
-    item.V = posed(p, request.time);
-    item.F = scene.parts[p].mesh.F;
-    item.color = part_color(scene, p);
+    item.color = part_color(scene, part);
+    if (resident) {
+      item.rest = request.resident_meshes[part];
+      item.placement = pose.to_isometry(scene.parts[part].center);
+    } else {
+      item.V = scene::posed_part_vertices(scene.parts[part], pose);
+      item.F = scene.parts[part].mesh.F;
+    }
+    return item;
+  };
+  std::vector<motion::Pose> poses;
+  Eigen::AlignedBox3d bounds;
+  for (int p = 0; p < parts; ++p) {
+    poses.push_back(pose_of(p, request.time));
+    MeshItem item = item_for(p, poses.back());
     item.highlighted = std::find(request.selected.begin(), request.selected.end(), p) != request.selected.end();
+    if (resident) bounds.extend(placed_box(*item.rest, item.placement));
+    else
+      for (Eigen::Index v = 0; v < item.V.rows(); ++v) bounds.extend(Eigen::Vector3d(item.V.row(v).transpose()));
     list.meshes.push_back(std::move(item));
   }
   if (request.transition >= 0) {
     for (const view::GhostSample& ghost : request.ghosts)
       for (int p = 0; p < parts; ++p) {
-        MeshItem item;
-        item.V = scene.posed_vertices(request.transition, p, ghost.time);
+        const motion::Pose pose = scene.pose_at(request.transition, p, ghost.time);
         // A part that does not move is not ghosted (it would only veil itself).
-        if ((item.V - list.meshes[p].V).cwiseAbs().maxCoeff() < 1e-9) continue;
-        item.F = scene.parts[p].mesh.F;
-        item.color = part_color(scene, p);
+        if ((pose.translation - poses[p].translation).norm() < 1e-9 &&
+            std::abs(std::abs(pose.rotation.dot(poses[p].rotation)) - 1) < 1e-12)
+          continue;
+        MeshItem item = item_for(p, pose);
         item.opacity = std::clamp(request.ghost_opacity * static_cast<float>(ghost.weight), 0.02f, 0.99f);
         list.meshes.push_back(std::move(item));
       }
   }
   for (const Eigen::AlignedBox3d& box : request.boxes) list.boxes.push_back({box});
 
-  Eigen::AlignedBox3d bounds = request.transition >= 0 ? view::scene_bounds_at(scene, request.transition, request.time)
-                                                       : view::scene_bounds_in_state(scene, request.state);
   list.grid.visible = request.grid && !bounds.isEmpty();
   if (list.grid.visible) {
     const double size = bounds.sizes().head<2>().maxCoeff();

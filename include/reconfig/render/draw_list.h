@@ -5,7 +5,10 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <memory>
 #include <vector>
+
+#include "reconfig/geometry/mesh.h"
 
 namespace reconfig::render {
 
@@ -14,6 +17,10 @@ namespace reconfig::render {
 struct MeshItem {
   Eigen::MatrixX3d V;  ///< #V×3 posed positions
   Eigen::MatrixX3i F;  ///< #F×3 triangles
+  /// Instead of V and F: rest geometry placed by `placement`. The renderer keeps such a mesh
+  /// on the GPU for as long as the object lives, so a part that only moves costs no upload.
+  std::shared_ptr<const geometry::Mesh> rest;
+  Eigen::Isometry3d placement = Eigen::Isometry3d::Identity();
   Eigen::Vector3f color{0.7f, 0.7f, 0.7f};
   float opacity = 1.0f;
   bool highlighted = false;  ///< selection: tinted and outlined with a rim glow

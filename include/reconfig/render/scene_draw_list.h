@@ -22,6 +22,10 @@ struct SceneDrawRequest {
   std::vector<Eigen::AlignedBox3d> boxes;     ///< e.g. collision interval boxes
   /// Parts drawn at these poses instead of their own at `time` (a drag in progress).
   std::vector<std::pair<int, motion::Pose>> pose_overrides;
+  /// Optional, one per part: the parts' rest meshes as shared objects. Parts and ghosts are
+  /// then drawn as these meshes plus a placement, which the renderer keeps on the GPU across
+  /// frames (an editor's choice; the floor grid then lies under the posed bounding boxes).
+  std::vector<std::shared_ptr<const geometry::Mesh>> resident_meshes;
   bool grid = true;
 };
 
