@@ -9,6 +9,7 @@
 #include <imgui.h>
 
 #include <Eigen/Core>
+#include <array>
 #include <chrono>
 #include <filesystem>
 #include <memory>
@@ -151,6 +152,24 @@ class Studio {
   std::unique_ptr<Document> document_;
   render::Renderer renderer_;
   render::RenderTarget viewport_image_;
+  /// Everything the viewport picture depends on; an unchanged picture is not drawn again.
+  struct ViewportInputs {
+    const Document* document = nullptr;
+    std::uint64_t version = 0;
+    const collision::CollisionSnapshot* snapshot = nullptr;
+    int transition = -1, state = 0;
+    double time = 0;
+    int selected = -1, width = 0, height = 0;
+    std::array<double, 9> camera{};
+    std::array<double, 7> preview{};
+    bool ghosts = false;
+    int ghost_count = 0;
+    float ghost_spacing = 0;
+    bool intervals = false;
+    bool operator==(const ViewportInputs& other) const;
+  };
+  std::optional<ViewportInputs> last_viewport_inputs_;
+  bool viewport_pulsing_ = false;  ///< collision boxes on screen: redraw every frame
   view::Camera camera_;
   bool frame_pending_ = true;
 

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <tuple>
 
 #include "panel_window.h"
 #include "reconfig/render/scene_draw_list.h"
@@ -57,7 +58,27 @@ void Studio::draw_viewport() {
   ImGui::End();
 }
 
+bool Studio::ViewportInputs::operator==(const ViewportInputs& other) const {
+  return std::tie(document, version, snapshot, transition, state, time, selected, width, height, camera, preview,
+                  ghosts, ghost_count, ghost_spacing, intervals) ==
+         std::tie(other.document, other.version, other.snapshot, other.transition, other.state, other.time,
+                  other.selected, other.width, other.height, other.camera, other.preview, other.ghosts,
+                  other.ghost_count, other.ghost_spacing, other.intervals);
+}
+
 void Studio::render_viewport_image(int width, int height) {
+  // Redraw only when what the picture shows changed (or its boxes pulse).
+  ViewportInputs inputs{document_.get(), document_ ? document_->version() : 0, collisions().get(),
+                        active_transition_, active_state_, time_, selected_part_, width, height,
+                        {camera_.target.x(), camera_.target.y(), camera_.target.z(), camera_.distance, camera_.yaw,
+                         camera_.pitch, camera_.fov_y, camera_.near_plane, camera_.far_plane},
+                        {}, show_ghosts, ghost_count, ghost_spacing, show_intervals};
+  if (drag_preview_)
+    inputs.preview = {drag_preview_->translation.x(), drag_preview_->translation.y(), drag_preview_->translation.z(),
+                      drag_preview_->rotation.w(), drag_preview_->rotation.x(), drag_preview_->rotation.y(),
+                      drag_preview_->rotation.z()};
+  if (!viewport_pulsing_ && last_viewport_inputs_ && *last_viewport_inputs_ == inputs) return;
+  last_viewport_inputs_ = inputs;
   viewport_image_.resize(width, height);
   viewport_image_.bind();
   render::DrawList list;
@@ -87,6 +108,7 @@ void Studio::render_viewport_image(int width, int height) {
     }
     list = render::scene_draw_list(scene, request);
     list.seconds = seconds_;
+    viewport_pulsing_ = !list.boxes.empty();
     // The selected part's path: where its pivot goes over the transition.
     if (active_transition_ >= 0 && selected_part_ >= 0) {
       render::LineItem path;
