@@ -49,34 +49,32 @@ std::vector<CollisionInterval> consolidate(const std::vector<TriangleContact>& c
   std::stable_sort(items.begin(), items.end(),
                    [](const CollisionInterval& a, const CollisionInterval& b) { return a.t0 < b.t0; });
 
-  // Sweep in time: each item joins the first open group it meets, or opens one.
-  std::vector<CollisionInterval> groups;
-  std::vector<std::size_t> open;  // indices into groups that may still meet later items
-  for (const CollisionInterval& item : items) {
-    std::erase_if(open, [&](std::size_t g) { return groups[g].t1 + kAdjacent < item.t0; });
-    bool joined = false;
-    for (std::size_t g : open)
-      if (can_merge(groups[g], item, max_duration)) {
-        absorb(groups[g], item);
-        joined = true;
-        break;
-      }
-    if (!joined) {
-      groups.push_back(item);
-      open.push_back(groups.size() - 1);
-    }
-  }
-  // Groups that grew may now meet each other: merge to a fixpoint.
+  // Sweeps in time: each group joins the first earlier group still open that it can merge
+  // with, or stays. Groups that grew may meet groups they did not meet before, so sweep again
+  // until a sweep merges nothing: then no two groups can merge (every pair that meets in time
+  // was compared). Each sweep is linear in the groups times the open ones; a few sweeps suffice.
+  std::vector<CollisionInterval> groups = std::move(items);
   for (bool merged = true; merged;) {
     merged = false;
-    for (std::size_t i = 0; i < groups.size() && !merged; ++i)
-      for (std::size_t j = i + 1; j < groups.size(); ++j)
-        if (can_merge(groups[i], groups[j], max_duration)) {
-          absorb(groups[i], groups[j]);
-          groups.erase(groups.begin() + static_cast<std::ptrdiff_t>(j));
-          merged = true;
+    std::vector<CollisionInterval> next;
+    std::vector<std::size_t> open;  // indices into next that may still meet later groups
+    for (CollisionInterval& group : groups) {
+      std::erase_if(open, [&](std::size_t g) { return next[g].t1 + kAdjacent < group.t0; });
+      bool joined = false;
+      for (const std::size_t g : open)
+        if (can_merge(next[g], group, max_duration)) {
+          absorb(next[g], group);
+          joined = merged = true;
           break;
         }
+      if (!joined) {
+        next.push_back(std::move(group));
+        open.push_back(next.size() - 1);
+      }
+    }
+    groups = std::move(next);
+    std::stable_sort(groups.begin(), groups.end(),
+                     [](const CollisionInterval& a, const CollisionInterval& b) { return a.t0 < b.t0; });
   }
   for (CollisionInterval& group : groups) {
     std::sort(group.triangles.begin(), group.triangles.end());

@@ -73,16 +73,17 @@ TEST(Consolidate, EveryContactIsCoveredByOneInterval) {
                    ci.t0 <= c.t0 && c.t1 <= ci.t1 && ci.box.contains(c.box);
       EXPECT_EQ(holders, 1);
     }
-    // Maximal consolidation leaves no two intervals that meet in time and space.
-    if (std::isinf(limit))
-      for (std::size_t i = 0; i < merged.size(); ++i)
-        for (std::size_t j = i + 1; j < merged.size(); ++j)
-          EXPECT_FALSE(merged[i].t0 <= merged[j].t1 && merged[j].t0 <= merged[i].t1 &&
-                       merged[i].box.intersects(merged[j].box));
+    // No two intervals could still merge: they do not meet in time and space, or (bounded)
+    // together they would last longer than the limit.
+    for (std::size_t i = 0; i < merged.size(); ++i)
+      for (std::size_t j = i + 1; j < merged.size(); ++j)
+        EXPECT_FALSE(merged[i].t0 <= merged[j].t1 && merged[j].t0 <= merged[i].t1 &&
+                     merged[i].box.intersects(merged[j].box) &&
+                     std::max(merged[i].t1, merged[j].t1) - std::min(merged[i].t0, merged[j].t0) <= limit);
   }
 }
 
-CollisionInterval ci(std::vector<int> parts, double t0, double t1) { return {t0, t1, std::move(parts), box(0, 1)}; }
+CollisionInterval ci(std::vector<int> parts, double t0, double t1) { return {t0, t1, std::move(parts), box(0, 1), false, false, {}}; }
 
 TEST(IntervalDiff, ClassifiesAndOrdersByPriority) {
   const std::vector<CollisionInterval> before = {ci({0, 1}, 0.1, 0.2), ci({0, 2}, 0.3, 0.4), ci({1, 2}, 0.5, 0.6),
