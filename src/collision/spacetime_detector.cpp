@@ -240,77 +240,90 @@ void process(const Traversal<family>& tr, const WorkItem& item, std::vector<Work
     next.push_back({item.pair, item.node_a, item.node_b, middle, item.s1});
   };
   if (na.leaf() && nb.leaf()) {
-    const double t0 = line.times[item.s0], t1 = line.times[item.s1];
-    TriangleContact contact{line.a, na.triangle, line.b, nb.triangle, t0, t1, {}, false, t0, t1};
-    // Reports the contact over step parameters [mu0, mu1] in pieces no longer than allowed.
-    const auto emit = [&](const MovingTriangle& a0, const MovingTriangle& a1, const MovingTriangle& b0,
-                          const MovingTriangle& b1, double mu0, double mu1) {
-      const double duration = (mu1 - mu0) * (t1 - t0);
-      const int pieces = std::max(1, static_cast<int>(std::ceil(duration / tr.options.max_contact_duration - 1e-9)));
-      for (int k = 0; k < pieces; ++k) {
-        const double lo = mu0 + (mu1 - mu0) * k / pieces;
-        const double hi = k + 1 == pieces ? mu1 : mu0 + (mu1 - mu0) * (k + 1) / pieces;
-        contact.t0 = k == 0 ? t0 + mu0 * (t1 - t0) : t0 + lo * (t1 - t0);
-        contact.t1 = k + 1 == pieces ? t0 + mu1 * (t1 - t0) : t0 + hi * (t1 - t0);
-        contact.box = meeting_box(triangle_box_at(a0, a1, lo, hi), triangle_box_at(b0, b1, lo, hi));
-        found.push_back(contact);
-      }
-    };
-    if (single_step) {
-      const MovingTriangle a0 = tr.corners(item.pair, 0, na.triangle, item.s0);
-      const MovingTriangle a1 = tr.corners(item.pair, 0, na.triangle, item.s1);
-      const MovingTriangle b0 = tr.corners(item.pair, 1, nb.triangle, item.s0);
-      const MovingTriangle b1 = tr.corners(item.pair, 1, nb.triangle, item.s1);
-      const double deviation =
-          tr.options.conservative ? tr.proxies[line.a].deviation + tr.proxies[line.b].deviation : 0.0;
-      if (meeting_pieces<family>(a0, a1, b0, b1, deviation + 2 * tr.pad) == 0) return;
-      ++stats.narrow_phase;
-      TrianglePairCcdRequest request;
-      request.a_start = a0;
-      request.a_end = a1;
-      request.b_start = b0;
-      request.b_end = b1;
-      request.time_tolerance = 1.0 / 32;  // of the step: pieces with a contact event are reported whole below that
-      request.distance_tolerance = 1e-4;
-      const TrianglePairCcdResult spans = triangle_pair_ccd(request);
-      stats.narrow_pieces += spans.pieces;
-      stats.contact_tests += spans.contact_tests;
-      for (const auto& [mu0, mu1] : spans.intervals) emit(a0, a1, b0, b1, mu0, mu1);
-      if (!spans.any() && tr.options.conservative) {
-        // The proxies miss, but the true motions stray up to the deviations from them: report
-        // the sixteenths of the step where the triangles' spacetime k-DOPs, so inflated, meet.
-        contact.possible = true;
-        const double reach = tr.proxies[line.a].deviation + tr.proxies[line.b].deviation + tr.pad;
-        constexpr int kPieces = 16;
-        for (int k = 0; k < kPieces; ++k) {
-          const double lo = static_cast<double>(k) / kPieces, hi = static_cast<double>(k + 1) / kPieces;
-          Kdop<family> dop_a, dop_b;
-          for (double mu : {lo, hi})
-            for (int c = 0; c < 3; ++c) {
-              dop_a.extend((1 - mu) * a0[c] + mu * a1[c], mu);
-              dop_b.extend((1 - mu) * b0[c] + mu * b1[c], mu);
-            }
-          dop_a.inflate(reach);
-          if (!dop_a.overlaps(dop_b)) continue;
-          Eigen::AlignedBox3d box_a = triangle_box_at(a0, a1, lo, hi);
-          box_a.min().array() -= reach;
-          box_a.max().array() += reach;
-          contact.t0 = t0 + lo * (t1 - t0);
-          contact.t1 = t0 + hi * (t1 - t0);
-          contact.box = box_a.intersection(triangle_box_at(b0, b1, lo, hi));
+    // The narrow phase of the two triangles over samples [s0, s1]: one step, or a range over
+    // which both hold still.
+    const auto leaves = [&](int s0, int s1) {
+      const double t0 = line.times[s0], t1 = line.times[s1];
+      TriangleContact contact{line.a, na.triangle, line.b, nb.triangle, t0, t1, {}, false, t0, t1};
+      // Reports the contact over step parameters [mu0, mu1] in pieces no longer than allowed.
+      const auto emit = [&](const MovingTriangle& a0, const MovingTriangle& a1, const MovingTriangle& b0,
+                            const MovingTriangle& b1, double mu0, double mu1) {
+        const double duration = (mu1 - mu0) * (t1 - t0);
+        const int pieces = std::max(1, static_cast<int>(std::ceil(duration / tr.options.max_contact_duration - 1e-9)));
+        for (int k = 0; k < pieces; ++k) {
+          const double lo = mu0 + (mu1 - mu0) * k / pieces;
+          const double hi = k + 1 == pieces ? mu1 : mu0 + (mu1 - mu0) * (k + 1) / pieces;
+          contact.t0 = k == 0 ? t0 + mu0 * (t1 - t0) : t0 + lo * (t1 - t0);
+          contact.t1 = k + 1 == pieces ? t0 + mu1 * (t1 - t0) : t0 + hi * (t1 - t0);
+          contact.box = meeting_box(triangle_box_at(a0, a1, lo, hi), triangle_box_at(b0, b1, lo, hi));
           found.push_back(contact);
         }
+      };
+      if (s1 - s0 == 1) {
+        const MovingTriangle a0 = tr.corners(item.pair, 0, na.triangle, s0);
+        const MovingTriangle a1 = tr.corners(item.pair, 0, na.triangle, s1);
+        const MovingTriangle b0 = tr.corners(item.pair, 1, nb.triangle, s0);
+        const MovingTriangle b1 = tr.corners(item.pair, 1, nb.triangle, s1);
+        const double deviation =
+            tr.options.conservative ? tr.proxies[line.a].deviation + tr.proxies[line.b].deviation : 0.0;
+        if (meeting_pieces<family>(a0, a1, b0, b1, deviation + 2 * tr.pad) == 0) return;
+        ++stats.narrow_phase;
+        TrianglePairCcdRequest request;
+        request.a_start = a0;
+        request.a_end = a1;
+        request.b_start = b0;
+        request.b_end = b1;
+        request.time_tolerance = 1.0 / 32;  // of the step: pieces with a contact event are reported whole below that
+        request.distance_tolerance = 1e-4;
+        const TrianglePairCcdResult spans = triangle_pair_ccd(request);
+        stats.narrow_pieces += spans.pieces;
+        stats.contact_tests += spans.contact_tests;
+        for (const auto& [mu0, mu1] : spans.intervals) emit(a0, a1, b0, b1, mu0, mu1);
+        if (!spans.any() && tr.options.conservative) {
+          // The proxies miss, but the true motions stray up to the deviations from them: report
+          // the sixteenths of the step where the triangles' spacetime k-DOPs, so inflated, meet.
+          contact.possible = true;
+          const double reach = tr.proxies[line.a].deviation + tr.proxies[line.b].deviation + tr.pad;
+          constexpr int kPieces = 16;
+          for (int k = 0; k < kPieces; ++k) {
+            const double lo = static_cast<double>(k) / kPieces, hi = static_cast<double>(k + 1) / kPieces;
+            Kdop<family> dop_a, dop_b;
+            for (double mu : {lo, hi})
+              for (int c = 0; c < 3; ++c) {
+                dop_a.extend((1 - mu) * a0[c] + mu * a1[c], mu);
+                dop_b.extend((1 - mu) * b0[c] + mu * b1[c], mu);
+              }
+            dop_a.inflate(reach);
+            if (!dop_a.overlaps(dop_b)) continue;
+            Eigen::AlignedBox3d box_a = triangle_box_at(a0, a1, lo, hi);
+            box_a.min().array() -= reach;
+            box_a.max().array() += reach;
+            contact.t0 = t0 + lo * (t1 - t0);
+            contact.t1 = t0 + hi * (t1 - t0);
+            contact.box = box_a.intersection(triangle_box_at(b0, b1, lo, hi));
+            found.push_back(contact);
+          }
+        }
+        return;
       }
+      if (!line.moving[0] && !line.moving[1]) {  // both hold still: one static test decides
+        ++stats.narrow_phase;
+        const MovingTriangle a = tr.corners(item.pair, 0, na.triangle, s0);
+        const MovingTriangle b = tr.corners(item.pair, 1, nb.triangle, s0);
+        if (geometry::triangles_intersect(a[0], a[1], a[2], b[0], b[1], b[2])) emit(a, a, b, b, 0, 1);
+      }
+    };
+    if (single_step || (!line.moving[0] && !line.moving[1])) {
+      leaves(item.s0, item.s1);
       return;
     }
-    if (!line.moving[0] && !line.moving[1]) {  // both hold still: one static test decides
-      ++stats.narrow_phase;
-      const MovingTriangle a = tr.corners(item.pair, 0, na.triangle, item.s0);
-      const MovingTriangle b = tr.corners(item.pair, 1, nb.triangle, item.s0);
-      if (geometry::triangles_intersect(a[0], a[1], a[2], b[0], b[1], b[2])) emit(a, a, b, b, 0, 1);
-      return;
+    // Over several steps, bound each step on its own: halving the range again and again
+    // would bound every half over all its samples.
+    for (int s = item.s0; s < item.s1; ++s) {
+      ++stats.bound_tests;
+      if (tr.bound(item.pair, 0, item.node_a, s, s + 1).overlaps(tr.bound(item.pair, 1, item.node_b, s, s + 1)))
+        leaves(s, s + 1);
     }
-    split_time();
     return;
   }
   // Split the dimension that makes the bounds loose: time when the motion over the range
