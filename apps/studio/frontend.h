@@ -69,8 +69,10 @@ class HeadlessFrontend {
   std::chrono::steady_clock::time_point clock_;
 };
 
-/// Runs the studio in a desktop window until the user quits. @throws render::ContextError
-/// when no window can be opened
-void run_in_window(StudioOptions options, const std::optional<std::filesystem::path>& scene, int width, int height);
+/// Runs the studio in a desktop window until the user quits, or for `frames` frames (> 0),
+/// then saves the last one as `screenshot` (if not empty): a check that the window path works.
+/// @throws render::ContextError when no window can be opened
+void run_in_window(StudioOptions options, const std::optional<std::filesystem::path>& scene, int width, int height,
+                   int frames = 0, const std::filesystem::path& screenshot = {});
 
 }  // namespace reconfig::studio

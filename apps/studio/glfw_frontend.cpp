@@ -8,6 +8,8 @@
 #include "frontend.h"
 #include "keys.h"
 #include "reconfig/render/glfw_window.h"
+#include "reconfig/render/image.h"
+#include "reconfig/render/render_target.h"
 
 namespace reconfig::studio {
 
@@ -16,7 +18,8 @@ static_assert(keys::kSpace == GLFW_KEY_SPACE && keys::kI == GLFW_KEY_I && keys::
               keys::kEscape == GLFW_KEY_ESCAPE && keys::kEnd == GLFW_KEY_END && keys::kS == GLFW_KEY_S,
               "keys.h must use GLFW's key codes");
 
-void run_in_window(StudioOptions options, const std::optional<std::filesystem::path>& scene, int width, int height) {
+void run_in_window(StudioOptions options, const std::optional<std::filesystem::path>& scene, int width, int height,
+                   int frames, const std::filesystem::path& screenshot) {
   render::GlfwWindow window("Reconfig Studio", width, height);
   UiContext ui;
   ImGui_ImplGlfw_InitForOpenGL(window.handle(), true);
@@ -24,7 +27,7 @@ void run_in_window(StudioOptions options, const std::optional<std::filesystem::p
     Studio studio(std::move(options));
     if (scene) studio.open(*scene);
     std::string title;
-    while (!studio.quit_requested()) {
+    for (int frame = 1; !studio.quit_requested(); ++frame) {
       window.poll_events(1.0 / 60);
       if (window.close_requested()) {
         window.cancel_close();
@@ -41,6 +44,10 @@ void run_in_window(StudioOptions options, const std::optional<std::filesystem::p
       glClearColor(0.9f, 0.9f, 0.92f, 1);
       glClear(GL_COLOR_BUFFER_BIT);
       ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+      if (frames > 0 && frame >= frames) {
+        if (!screenshot.empty()) render::write_png(screenshot, render::read_bound_framebuffer(fb_width, fb_height));
+        break;
+      }
       window.swap_buffers();
       const Document* document = studio.document();
       const std::string next = document ? "Reconfig Studio — " + document->file().filename().string() +

@@ -25,7 +25,7 @@ using namespace reconfig;
 struct Options {
   std::string scene, screenshot, script, frame_times, size = "1280x800";
   int frames = 0;
-  bool headless = false, ghosts = false;
+  bool headless = false, window = false, ghosts = false;
   double time = -1;
 };
 
@@ -79,6 +79,7 @@ int main(int argc, char** argv) {
   Options options;
   app.add_option("scene", options.scene, "scene file (.json) to open");
   app.add_flag("--headless", options.headless, "no window: draw through EGL offscreen");
+  app.add_flag("--window", options.window, "a window even with --frames/--screenshot (checks the window path)");
   app.add_option("--size", options.size, "window or image size WIDTHxHEIGHT")->capture_default_str();
   app.add_option("--screenshot", options.screenshot, "save the last frame as PNG and exit (headless)");
   app.add_option("--frames", options.frames, "frames to run before the screenshot (headless)");
@@ -99,13 +100,13 @@ int main(int argc, char** argv) {
     std::cerr << "reconfig-studio: --size must look like 1280x800 (64 to 8192 pixels each way)\n";
     return 2;
   }
-  const bool headless = options.headless || !options.screenshot.empty() || !options.script.empty() ||
-                        options.frames > 0;
+  const bool headless = !options.window && (options.headless || !options.screenshot.empty() ||
+                                            !options.script.empty() || options.frames > 0);
   try {
     if (headless) return run_headless(options, width, height);
     studio::StudioOptions studio_options;
     studio::run_in_window(studio_options, options.scene.empty() ? std::nullopt : std::optional(options.scene), width,
-                          height);
+                          height, options.frames, options.screenshot);
   } catch (const render::ContextError& error) {
     std::cerr << "reconfig-studio: " << error.what() << "\n";
     return 2;

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <fstream>
 
 #include "support/run_command.h"
@@ -38,6 +39,18 @@ TEST(StudioCli, ScreenshotWritesAPngOfTheWholeStudio) {
   std::ifstream times(scene.parent_path() / "times.json");
   std::string json((std::istreambuf_iterator<char>(times)), {});
   EXPECT_NE(json.find("\"frames\": 3"), std::string::npos) << json;
+}
+
+// The desktop path (GLFW window, the ImGui GLFW backend, swapping) under a virtual X server.
+TEST(StudioCli, TheWindowShowsTheStudioUnderXvfb) {
+  if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0) GTEST_SKIP() << "xvfb-run is not installed (./run deps)";
+  const std::filesystem::path scene = bench_table_copy();
+  const std::filesystem::path png = scene.parent_path() / "window.png";
+  const std::string command = "xvfb-run -a -s '-screen 0 1024x768x24' " +
+                              (testing::binary_dir() / "bin" / "reconfig-studio").string() + " " + scene.string() +
+                              " --window --size 800x600 --frames 10 --screenshot " + png.string() + " >/dev/null 2>&1";
+  ASSERT_EQ(std::system(command.c_str()), 0);
+  EXPECT_GT(std::filesystem::file_size(png), 10000u);
 }
 
 TEST(StudioCli, BadInputExitsTwoWithAMessage) {
