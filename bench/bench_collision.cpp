@@ -26,7 +26,6 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <cstdlib>
 #include <limits>
 #include <filesystem>
 #include <map>
@@ -37,11 +36,10 @@
 #include "reconfig/collision/reference_check.h"
 #include "reconfig/collision/spacetime_detector.h"
 #include "reconfig/collision/spacetime_proxy.h"
-#include "reconfig/geometry/load_mesh.h"
 #include "reconfig/scene/edits.h"
 #include "reconfig/scene/history.h"
-#include "reconfig/scene/part.h"
 #include "reconfig/scene/scene_file.h"
+#include "scenes.h"
 
 #ifdef RECONFIG_HAVE_FCL
 #include <fcl/broadphase/broadphase_dynamic_AABB_tree.h>
@@ -52,95 +50,10 @@
 namespace {
 
 using namespace reconfig;
+using namespace reconfig::bench;
 namespace fs = std::filesystem;
 
 enum SceneId : int { kElephant, kBunnyArmadillo, kEight, kKitchenHasty, kKitchen, kGallery };
-
-/// `data/meshes/<name>` of the CGAL demo data, extracted once to the temporary folder, scaled
-/// so that its bounding box is `size` wide at most, centered at the origin.
-geometry::Mesh cgal_mesh(const std::string& name, double size = 1.0) {
-  const fs::path root = fs::temp_directory_path() / "reconfig-bench-data";
-  const fs::path file = root / "data" / "meshes" / name;
-  if (!fs::exists(file)) {
-    fs::create_directories(root);
-    const std::string command = "tar xzf /usr/share/doc/libcgal-dev/data.tar.gz -C " + root.string() + " data/meshes/" + name;
-    if (std::system(command.c_str()) != 0) throw std::runtime_error("cannot extract " + name + " (libcgal-demo)");
-  }
-  geometry::Mesh mesh = geometry::load_mesh(file);
-  const Eigen::RowVector3d lo = mesh.V.colwise().minCoeff(), hi = mesh.V.colwise().maxCoeff();
-  mesh.V = ((mesh.V.rowwise() - (lo + hi) / 2) * (size / (hi - lo).maxCoeff())).eval();
-  return mesh;
-}
-
-scene::Part make_part(const std::string& name, geometry::Mesh mesh) {
-  scene::Part part;
-  part.name = name;
-  part.source = scene::EditedMesh{};
-  part.mesh = std::move(mesh);
-  part.center = scene::part_center(part.mesh);
-  return part;
-}
-
-/// Straight-line Bézier handles at the thirds of the chords (constant speed along each chord).
-std::vector<motion::TranslationKey> polyline_keys(const std::vector<std::pair<double, Eigen::Vector3d>>& points) {
-  std::vector<motion::TranslationKey> keys;
-  for (std::size_t k = 0; k < points.size(); ++k) {
-    const Eigen::Vector3d p = points[k].second;
-    const Eigen::Vector3d prev = k > 0 ? points[k - 1].second : p, next = k + 1 < points.size() ? points[k + 1].second : p;
-    keys.push_back({points[k].first, p, p + (prev - p) / 3, p + (next - p) / 3});
-  }
-  return keys;
-}
-
-scene::Transition one_track_transition(const std::string& name, const std::string& part, scene::KeyframedTrack track) {
-  scene::Transition transition;
-  transition.name = name;
-  transition.from = "start";
-  transition.to = "end";
-  transition.tracks.emplace(part, std::move(track));
-  return transition;
-}
-
-/// `still` rests at the origin; `moving` sweeps from x = −1.3 to x = 1.3 over a hump, turning 90°.
-scene::Reconfigurable sweep_scene(const std::string& still, const std::string& moving) {
-  scene::Reconfigurable scene;
-  scene.parts = {make_part("still", cgal_mesh(still)), make_part("moving", cgal_mesh(moving))};
-  const Eigen::Vector3d a(-1.3, 0.1, 0), b(1.3, -0.1, 0.05);
-  const Eigen::Quaterniond qa = Eigen::Quaterniond::Identity();
-  const Eigen::Quaterniond qb(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ()));
-  scene.states = {{"start", {{"moving", {qa, a}}}}, {"end", {{"moving", {qb, b}}}}};
-  scene::KeyframedTrack track;
-  track.translation = {{0.0, a, a, a + Eigen::Vector3d(0.6, 0, 0.3)}, {1.0, b, b + Eigen::Vector3d(-0.6, 0, 0.3), b}};
-  track.rotation = {{0.0, qa}, {1.0, qb}};
-  scene.transitions = {one_track_transition("sweep", "moving", track)};
-  return scene;
-}
-
-/// 16 statues (1 m boxes, bunnies and armadillos in turn) in two rows of 8 along x, 1.2 m apart,
-/// the rows 1.6 m apart (a 0.6 m corridor); a 0.45 m armadillo walks down the corridor turning
-/// 90°, and swerves 0.2 m towards the fourth statue of the far row midway.
-scene::Reconfigurable gallery_scene() {
-  scene::Reconfigurable scene;
-  const geometry::Mesh bunny = cgal_mesh("bunny00.off"), armadillo = cgal_mesh("armadillo.off");
-  for (int k = 0; k < 16; ++k) {
-    geometry::Mesh mesh = k % 2 == 0 ? bunny : armadillo;
-    const int row = k / 8, column = k % 8;
-    mesh.V.rowwise() += Eigen::RowVector3d(1.2 * column, row == 0 ? -0.8 : 0.8, 0);
-    scene.parts.push_back(make_part("statue_" + std::to_string(k), std::move(mesh)));
-  }
-  scene.parts.push_back(make_part("walker", cgal_mesh("armadillo.off", 0.45)));
-  const Eigen::Vector3d a(-1.0, 0, -0.2), m(3.6, 0.2, -0.2), b(9.4, 0, -0.2);
-  const Eigen::Quaterniond qa = Eigen::Quaterniond::Identity();
-  const Eigen::Quaterniond qb(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ()));
-  scene.states = {{"start", {{"walker", {qa, a}}}}, {"end", {{"walker", {qb, b}}}}};
-  scene::KeyframedTrack track;
-  track.translation = polyline_keys({{0.0, a}, {0.5, m}, {1.0, b}});
-  track.translation[1].in = m - Eigen::Vector3d(1.5, 0, 0);  // a smooth swerve through the middle key
-  track.translation[1].out = m + Eigen::Vector3d(1.5, 0, 0);
-  track.rotation = {{0.0, qa}, {1.0, qb}};
-  scene.transitions = {one_track_transition("walk", "walker", track)};
-  return scene;
-}
 
 struct Fixture {
   std::string label;

@@ -101,7 +101,7 @@ int main(int argc, char** argv) {
     const fs::path dir = fs::temp_directory_path() / "reconfig-bench-studio";
     fs::remove_all(dir);
     fs::create_directories(dir);
-    scene::Reconfigurable big = bench::sweep_scene("bunny00.off", "armadillo.off");
+    scene::Reconfigurable big = bench::sweep_scene("armadillo.off", "bunny00.off");
     scene::save_scene(big, dir / "scene.json");
     studio::HeadlessFrontend frontend(width, height);
     if (!frontend.studio().open(dir / "scene.json")) throw std::runtime_error(frontend.studio().status());
