@@ -115,14 +115,14 @@ TrianglePairCcdResult triangle_pair_ccd(const TrianglePairCcdRequest& request) {
   std::size_t next = 0;
   std::vector<CoplanarityCubic> cubics;
   cubics.reserve(4 * kContactTests);
+  std::array<MovingPoints, kContactTests> points;
   for (int index = 0; index < kContactTests; ++index) {
     const std::array<int, 4> vertices = test_vertices(index);
-    MovingPoints points;
     for (int k = 0; k < 4; ++k) {
-      points.start[k] = motion.start[vertices[k]];
-      points.end[k] = motion.end[vertices[k]];
+      points[index].start[k] = motion.start[vertices[k]];
+      points[index].end[k] = motion.end[vertices[k]];
     }
-    cubics.emplace_back(points, 0, 1);
+    cubics.emplace_back(points[index], 0, 1);
   }
   PrimitiveCcdOptions options;
   options.tolerance = request.distance_tolerance;
@@ -195,10 +195,17 @@ TrianglePairCcdResult triangle_pair_ccd(const TrianglePairCcdRequest& request) {
     queue.push_back({piece.lo, mid, firing, cubics.size()});
     queue.push_back({mid, piece.hi, firing, cubics.size() + count});
     cubics.resize(cubics.size() + 2 * count);
+    // Halving by de Casteljau needs the exact middle; past 52 halvings it may be rounded.
+    // (TwoSum: `sum` is exact iff its rounding error is zero.)
+    const double sum = piece.lo + piece.hi, part = sum - piece.lo;
+    const bool exact_middle = (piece.lo - (sum - part)) + (piece.hi - part) == 0 && sum > 0x1p-1000;
     std::size_t rank = 0;
     for (int index = 0; index < kContactTests; ++index)
       if (firing & (1u << index)) {
-        const std::array<CoplanarityCubic, 2> halves = cubic_of(index).halves();
+        const std::array<CoplanarityCubic, 2> halves =
+            exact_middle ? cubic_of(index).halves()
+                         : std::array{CoplanarityCubic(points[index], piece.lo, mid),
+                                      CoplanarityCubic(points[index], mid, piece.hi)};
         cubics[queue.back().first_cubic - count + rank] = halves[0];
         cubics[queue.back().first_cubic + rank] = halves[1];
         ++rank;

@@ -57,6 +57,23 @@ TEST(TrianglePairCcd, VertexEntersTheFaceAtOneThird) {
             0);
 }
 
+/// Refining down to the last bit of time (past the 52 halvings where the pieces' middles stay
+/// exact, so the coplanarity cubics are rebuilt instead of halved) still brackets the events.
+TEST(TrianglePairCcd, RefinementToTheLastBitStillBracketsTheEvents) {
+  const Tri a0 = kFalling;
+  TrianglePairCcdRequest req = request(a0, shifted(a0, {0, 0, -3}), kBig, kBig);
+  req.time_tolerance = 0;
+  req.max_pieces = 1 << 20;
+  const TrianglePairCcdResult r = triangle_pair_ccd(req);
+  ASSERT_EQ(r.intervals.size(), 1u);
+  EXPECT_FALSE(r.budget_exhausted);
+  EXPECT_GT(r.pieces, 2 * 53);  // it went deeper than the exact halvings
+  EXPECT_LE(r.intervals[0].lo, 1.0 / 3);
+  EXPECT_GE(r.intervals[0].lo, 1.0 / 3 - 1e-6);  // the contact tests accept 1e-6 of distance
+  EXPECT_GE(r.intervals[0].hi, 0.5);
+  EXPECT_LE(r.intervals[0].hi, 0.5 + 1e-6);
+}
+
 TEST(TrianglePairCcd, EdgesCrossAtOneHalfThenPierce) {
   // A in plane y = 0 hanging below its top edge on the x axis; B in plane x = 0 standing on its
   // bottom edge at z = 1 − 2t. The edges cross at t = 1/2; then B's edge pierces A until t = 1.

@@ -53,7 +53,8 @@ class CoplanarityCubic {
   Coplanarity classify() const;
 
   /// The cubic over the first and the second half of the range, split at its exact middle
-  /// (t_min + t_max) / 2 (assumed representable, as for dyadic ranges).
+  /// (t_min + t_max) / 2: callers must make sure that this middle is a double (as it is for
+  /// dyadic ranges down to 2^-52), or build the halves' cubics afresh.
   std::array<CoplanarityCubic, 2> halves() const;
 
  private:
