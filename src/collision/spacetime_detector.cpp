@@ -219,6 +219,9 @@ unsigned meeting_pieces(const MovingTriangle& a0, const MovingTriangle& a1, cons
   return meeting;
 }
 
+/// Two leaves over at most this many steps are bounded step by step.
+constexpr int kStepwiseLeafSteps = 8;
+
 /// Processes one work item: prunes it, splits it into `next`, or runs the narrow phase.
 template <DopFamily family>
 void process(const Traversal<family>& tr, const WorkItem& item, std::vector<WorkItem>& next,
@@ -317,8 +320,13 @@ void process(const Traversal<family>& tr, const WorkItem& item, std::vector<Work
       leaves(item.s0, item.s1);
       return;
     }
-    // Over several steps, bound each step on its own: halving the range again and again
-    // would bound every half over all its samples.
+    // Over a few steps, bound each step on its own: halving the range again and again would
+    // bound every half over all its samples. Long ranges are halved first, as a range where the
+    // triangles meet nowhere is then dropped with one test.
+    if (item.s1 - item.s0 > kStepwiseLeafSteps) {
+      split_time();
+      return;
+    }
     for (int s = item.s0; s < item.s1; ++s) {
       ++stats.bound_tests;
       if (tr.bound(item.pair, 0, item.node_a, s, s + 1).overlaps(tr.bound(item.pair, 1, item.node_b, s, s + 1)))
