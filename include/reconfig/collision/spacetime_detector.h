@@ -44,7 +44,7 @@ struct TraversalPreview {
 
 struct DetectionStats {
   long bound_tests = 0;     ///< k-DOP pair overlap tests
-  long narrow_phase = 0;    ///< triangle-pair continuous tests
+  long narrow_phase = 0;    ///< triangle-pair continuous tests (leaf pairs whose k-DOPs meet in some eighth of the step)
   long narrow_pieces = 0;   ///< time pieces the narrow phase examined
   long contact_tests = 0;   ///< vertex–face and edge–edge tests the narrow phase ran
   long containment_tests = 0;
