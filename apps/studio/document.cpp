@@ -4,6 +4,8 @@
 
 #include "reconfig/common/input_error.h"
 #include "reconfig/common/write_atomically.h"
+#include "reconfig/geometry/display_simplification.h"
+#include "reconfig/geometry/mesh_check.h"
 #include "reconfig/scene/scene_file.h"
 
 namespace reconfig::studio {
@@ -30,12 +32,32 @@ Document::Document(scene::Reconfigurable scene, fs::path file, collision::Collis
 
 void Document::publish(std::shared_ptr<const scene::Reconfigurable> next, const scene::DirtySet& dirty) {
   scene_ = std::move(next);
-  const auto share = [&](int part) { return std::make_shared<const geometry::Mesh>(scene_->parts[part].mesh); };
-  if (dirty.structure_changed || part_meshes_.size() != scene_->parts.size()) {
-    part_meshes_.clear();
-    for (int part = 0; part < static_cast<int>(scene_->parts.size()); ++part) part_meshes_.push_back(share(part));
+  const auto share = [&](int part) {
+    part_meshes_[part] = std::make_shared<const geometry::Mesh>(scene_->parts[part].mesh);
+    geometry::MeshCheckOptions quick;
+    quick.check_self_intersections = false;
+    const geometry::MeshReport report = geometry::check_mesh(*part_meshes_[part], quick);
+    solid_parts_[part] = report.is_closed() && report.is_oriented() && report.is_outward();
+  };
+  const bool everything = dirty.structure_changed || part_meshes_.size() != scene_->parts.size();
+  if (everything) {
+    part_meshes_.assign(scene_->parts.size(), nullptr);
+    solid_parts_.assign(scene_->parts.size(), false);
+    for (int part = 0; part < static_cast<int>(scene_->parts.size()); ++part) share(part);
   } else {
-    for (const int part : dirty.geometry_changed) part_meshes_[part] = share(part);
+    for (const int part : dirty.geometry_changed) share(part);
+  }
+  if (everything || !dirty.geometry_changed.empty()) {
+    // Big designs get coarser copies to draw while things move, each part its share of the budget.
+    long total = 0;
+    for (const auto& mesh : part_meshes_) total += mesh->F.rows();
+    moving_meshes_ = part_meshes_;
+    if (total > kDetailedTriangles)
+      for (std::size_t part = 0; part < part_meshes_.size(); ++part) {
+        const int budget = std::max(200, static_cast<int>(kDetailedTriangles * part_meshes_[part]->F.rows() / total));
+        moving_meshes_[part] =
+            std::make_shared<const geometry::Mesh>(geometry::simplify_for_display(*part_meshes_[part], budget));
+      }
   }
   version_ = service_->submit(scene_, dirty);
 }
@@ -53,19 +75,13 @@ std::string Document::execute(std::unique_ptr<scene::Command> command) {
   return "";
 }
 
-bool Document::undo() {
-  if (!history_.can_undo()) return false;
-  auto next = std::make_shared<scene::Reconfigurable>(*scene_);
-  const scene::DirtySet dirty = history_.undo(*next);
-  publish(std::move(next), dirty);
-  modified_ = autosave_pending_ = true;
-  return true;
-}
+bool Document::undo() { return step_history(false); }
+bool Document::redo() { return step_history(true); }
 
-bool Document::redo() {
-  if (!history_.can_redo()) return false;
+bool Document::step_history(bool forward) {
+  if (forward ? !history_.can_redo() : !history_.can_undo()) return false;
   auto next = std::make_shared<scene::Reconfigurable>(*scene_);
-  const scene::DirtySet dirty = history_.redo(*next);
+  const scene::DirtySet dirty = forward ? history_.redo(*next) : history_.undo(*next);
   publish(std::move(next), dirty);
   modified_ = autosave_pending_ = true;
   return true;

@@ -65,6 +65,13 @@ class Document {
   /// when an edit changes a part's geometry or the list of parts, so they outlive edits of
   /// poses and keys.
   const std::vector<std::shared_ptr<const geometry::Mesh>>& part_meshes() const { return part_meshes_; }
+  /// Per part: its mesh is closed and outward-oriented (checked when its geometry changes).
+  const std::vector<bool>& solid_parts() const { return solid_parts_; }
+  /// Per part: a coarser copy for drawing while things move, in designs of more than
+  /// `kDetailedTriangles` triangles (the parts share a budget of that many); else the same
+  /// objects as `part_meshes`.
+  const std::vector<std::shared_ptr<const geometry::Mesh>>& moving_meshes() const { return moving_meshes_; }
+  static constexpr int kDetailedTriangles = 20000;
 
   const collision::CollisionService& collisions() const { return *service_; }
   /// The version number of the current scene as submitted to the collision service.
@@ -72,9 +79,13 @@ class Document {
 
  private:
   void publish(std::shared_ptr<const scene::Reconfigurable> next, const scene::DirtySet& dirty);
+  /// Redo (forward) or undo one step on a new version of the scene.
+  bool step_history(bool forward);
 
   std::shared_ptr<const scene::Reconfigurable> scene_;
   std::vector<std::shared_ptr<const geometry::Mesh>> part_meshes_;
+  std::vector<bool> solid_parts_;
+  std::vector<std::shared_ptr<const geometry::Mesh>> moving_meshes_;
   std::filesystem::path file_;
   scene::History history_;
   std::unique_ptr<collision::CollisionService> service_;

@@ -261,27 +261,18 @@ bool Studio::move_key_time(KeyRef key, double t) {
   return execute(scene::set_rotation_key(transition, part, key.index, value));
 }
 
-bool Studio::undo() {
-  if (!document_) return false;
-  const std::string label = document_->undo_label();
-  if (!document_->undo()) {
-    set_status("nothing to undo");
-    return false;
-  }
-  selected_key_.reset();
-  set_status("undid " + label);
-  return true;
-}
+bool Studio::undo() { return step_history(false); }
+bool Studio::redo() { return step_history(true); }
 
-bool Studio::redo() {
+bool Studio::step_history(bool forward) {
   if (!document_) return false;
-  const std::string label = document_->redo_label();
-  if (!document_->redo()) {
-    set_status("nothing to redo");
+  const std::string label = forward ? document_->redo_label() : document_->undo_label();
+  if (!(forward ? document_->redo() : document_->undo())) {
+    set_status(forward ? "nothing to redo" : "nothing to undo");
     return false;
   }
   selected_key_.reset();
-  set_status("redid " + label);
+  set_status((forward ? "redid " : "undid ") + label);
   return true;
 }
 

@@ -145,6 +145,7 @@ class Studio {
   int pick_part(const view::Ray& ray) const;
 
   void reset_view_for_new_document();
+  bool step_history(bool forward);
   void advance_playback(double seconds);
   void set_status(std::string message, bool error = false);
 
@@ -166,6 +167,7 @@ class Studio {
     int ghost_count = 0;
     float ghost_spacing = 0;
     bool intervals = false;
+    bool detailed = true;  ///< full meshes (false: the coarse ones drawn while things move)
     bool operator==(const ViewportInputs& other) const;
   };
   std::optional<ViewportInputs> last_viewport_inputs_;
@@ -188,6 +190,7 @@ class Studio {
   std::optional<KeyRef> key_drag_;
   double key_drag_time_ = 0;
   bool viewport_dragging_ = false;
+  bool scrubbing_ = false;  ///< the time strip is being dragged
 
   std::optional<std::chrono::steady_clock::time_point> last_frame_;
   std::chrono::steady_clock::time_point now_{};

@@ -104,7 +104,8 @@ void Studio::draw_timeline() {
   }
   ImGui::SetCursorScreenPos({x0, scrub_y});
   ImGui::InvisibleButton("##scrub", {width, kRowHeight});
-  if (ImGui::IsItemActive()) {
+  scrubbing_ = ImGui::IsItemActive();
+  if (scrubbing_) {
     playing_ = false;
     set_time(t_of(io.MousePos.x));
   }

@@ -60,10 +60,10 @@ void Studio::draw_viewport() {
 
 bool Studio::ViewportInputs::operator==(const ViewportInputs& other) const {
   return std::tie(document, version, snapshot, transition, state, time, selected, width, height, camera, preview,
-                  ghosts, ghost_count, ghost_spacing, intervals) ==
+                  ghosts, ghost_count, ghost_spacing, intervals, detailed) ==
          std::tie(other.document, other.version, other.snapshot, other.transition, other.state, other.time,
                   other.selected, other.width, other.height, other.camera, other.preview, other.ghosts,
-                  other.ghost_count, other.ghost_spacing, other.intervals);
+                  other.ghost_count, other.ghost_spacing, other.intervals, other.detailed);
 }
 
 void Studio::render_viewport_image(int width, int height) {
@@ -73,6 +73,9 @@ void Studio::render_viewport_image(int width, int height) {
                         {camera_.target.x(), camera_.target.y(), camera_.target.z(), camera_.distance, camera_.yaw,
                          camera_.pitch, camera_.fov_y, camera_.near_plane, camera_.far_plane},
                         {}, show_ghosts, ghost_count, ghost_spacing, show_intervals};
+  const bool moving = playing_ || gizmo_drag_ || viewport_dragging_ || key_drag_ || scrubbing_ ||
+                     ImGui::IsMouseDragging(ImGuiMouseButton_Right) || ImGui::IsMouseDragging(ImGuiMouseButton_Middle);
+  inputs.detailed = !moving;
   if (drag_preview_)
     inputs.preview = {drag_preview_->translation.x(), drag_preview_->translation.y(), drag_preview_->translation.z(),
                       drag_preview_->rotation.w(), drag_preview_->rotation.x(), drag_preview_->rotation.y(),
@@ -90,7 +93,13 @@ void Studio::render_viewport_image(int width, int height) {
     request.state = active_state_;
     if (selected_part_ >= 0) request.selected = {selected_part_};
     if (drag_preview_ && selected_part_ >= 0) request.pose_overrides = {{selected_part_, *drag_preview_}};
-    request.resident_meshes = document_->part_meshes();
+    // While things move, big designs are drawn coarser (and in full detail once they stop).
+    if (moving) {
+      request.resident_meshes = document_->moving_meshes();
+    } else {
+      request.resident_meshes = document_->part_meshes();
+      request.solid_parts = document_->solid_parts();
+    }
     if (active_transition_ >= 0) {
       if (show_ghosts) {
         view::GhostRequest ghosts;

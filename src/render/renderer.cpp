@@ -317,6 +317,8 @@ void Renderer::Impl::release_dead_meshes() {
 }
 
 void Renderer::Impl::draw_mesh(const MeshItem& mesh) {
+  if (mesh.cull_back_faces) glEnable(GL_CULL_FACE);
+  else glDisable(GL_CULL_FACE);
   if (!mesh.rest) {
     glUniformMatrix4fv(surface_model, 1, GL_FALSE, Eigen::Matrix4f::Identity().eval().data());
     draw_mesh(mesh.V, mesh.F, mesh.color, mesh.opacity, mesh.highlighted);
@@ -384,6 +386,7 @@ void Renderer::draw(const DrawList& list, const view::Camera& camera, int width,
   for (const MeshItem& mesh : list.meshes)
     if (mesh.opacity >= 1.0f) r.draw_mesh(mesh);
   for (const MeshItem& cone : cones) r.draw_mesh(cone);
+  glDisable(GL_CULL_FACE);
 
   // 2. Grid, lines and arrow shafts (depth tested, blended, not occluding transparent items).
   glUseProgram(r.flat_program);
@@ -439,6 +442,7 @@ void Renderer::draw(const DrawList& list, const view::Camera& camera, int width,
     if (item.mesh) {
       glUseProgram(r.surface_program);
       r.draw_mesh(*item.mesh);
+      glDisable(GL_CULL_FACE);
       continue;
     }
     const BoxItem& b = *item.box;

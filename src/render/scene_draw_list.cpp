@@ -51,6 +51,7 @@ DrawList scene_draw_list(const scene::Reconfigurable& scene, const SceneDrawRequ
   auto item_for = [&](int part, const motion::Pose& pose) {
     MeshItem item;
     item.color = part_color(scene, part);
+    item.cull_back_faces = static_cast<int>(request.solid_parts.size()) == parts && request.solid_parts[part];
     if (resident) {
       item.rest = request.resident_meshes[part];
       item.placement = pose.to_isometry(scene.parts[part].center);
@@ -81,6 +82,7 @@ DrawList scene_draw_list(const scene::Reconfigurable& scene, const SceneDrawRequ
           continue;
         MeshItem item = item_for(p, pose);
         item.opacity = std::clamp(request.ghost_opacity * static_cast<float>(ghost.weight), 0.02f, 0.99f);
+        item.cull_back_faces = false;  // a see-through ghost shows its far side
         list.meshes.push_back(std::move(item));
       }
   }

@@ -21,6 +21,9 @@ struct MeshItem {
   /// on the GPU for as long as the object lives, so a part that only moves costs no upload.
   std::shared_ptr<const geometry::Mesh> rest;
   Eigen::Isometry3d placement = Eigen::Isometry3d::Identity();
+  /// The mesh is a closed, outward-oriented solid: its back faces can never be seen, so they
+  /// are not drawn (half the triangles rasterized).
+  bool cull_back_faces = false;
   Eigen::Vector3f color{0.7f, 0.7f, 0.7f};
   float opacity = 1.0f;
   bool highlighted = false;  ///< selection: tinted and outlined with a rim glow

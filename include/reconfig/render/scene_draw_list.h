@@ -26,6 +26,9 @@ struct SceneDrawRequest {
   /// then drawn as these meshes plus a placement, which the renderer keeps on the GPU across
   /// frames (an editor's choice; the floor grid then lies under the posed bounding boxes).
   std::vector<std::shared_ptr<const geometry::Mesh>> resident_meshes;
+  /// Optional, one per part: whether its mesh is a closed, outward-oriented solid (its back
+  /// faces are then culled).
+  std::vector<bool> solid_parts;
   bool grid = true;
 };
 
