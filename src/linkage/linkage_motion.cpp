@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "reconfig/common/input_error.h"
@@ -68,23 +69,35 @@ std::vector<Eigen::Isometry3d> LinkageMotion::maps_at(double t, const std::vecto
   Eigen::Matrix2Xd X;
   ReconstructionFailure failure;
   if (!joints_at(t, X, &failure))
-    throw InputError("", "", fmt::format("the linkage cannot be reconstructed at motor angle {:.3f}°: {}",
-                                         degrees(angle_at(t)), failure.message));
+    throw InputError("", "motor", fmt::format("the linkage cannot be reconstructed at motor angle {:.3f}°: {}",
+                                              degrees(angle_at(t)), failure.message));
   std::vector<Eigen::Isometry3d> maps;
   maps.reserve(bodies.size());
-  for (const AttachedBody& body : bodies) maps.push_back(attached_map(X, body.attachment, plane_));
+  for (const AttachedBody& body : bodies) {
+    maps.push_back(attached_map(X, body.attachment, plane_));
+    if (!maps.back().matrix().allFinite())
+      throw InputError("", "", "the placement in 3D is not finite (plane, scale or offsets too large)");
+  }
   return maps;
 }
 
 namespace {
 
 struct Compiler {
+  [[noreturn]] void too_many_keys() const {
+    throw InputError("", "tolerance",
+                     fmt::format("following the linkage within {} would take more than {} key poses (a tolerance far "
+                                 "too small for the size of the parts, or too many turns)",
+                                 request.tolerance, request.max_keys));
+  }
+
   const LinkageMotion& motion;
   const CompileMotionRequest& request;
   CompiledMotion result;
   std::vector<std::vector<Eigen::Isometry3d>> maps;  // per key time, per body
 
   void push(double t, std::vector<Eigen::Isometry3d> at) {
+    if (static_cast<long long>(result.times.size()) >= request.max_keys) too_many_keys();
     result.times.push_back(t);
     maps.push_back(std::move(at));
   }
@@ -100,11 +113,18 @@ struct Compiler {
     for (int s = 1; s <= checks; ++s) {
       const double f = static_cast<double>(s) / (checks + 1);
       const std::vector<Eigen::Isometry3d> truth = motion.maps_at(a + f * (b - a), request.bodies);
-      for (std::size_t i = 0; i < n; ++i)
-        worst = std::max(worst, placement_distance(screws[i].at(f), truth[i], request.bodies[i].center,
-                                                   request.bodies[i].radius));
+      for (std::size_t i = 0; i < n; ++i) {
+        const double d = placement_distance(screws[i].at(f), truth[i], request.bodies[i].center,
+                                            request.bodies[i].radius);
+        worst = std::isnan(d) ? std::numeric_limits<double>::infinity() : std::max(worst, d);
+      }
     }
-    if (worst > 0.5 * request.tolerance && b - a > request.min_segment) {
+    if (worst > 0.5 * request.tolerance) {
+      if (!(b - a > request.min_segment))
+        throw InputError("", "tolerance",
+                         fmt::format("the motion cannot be followed within {}: {} remain between key poses {} apart "
+                                     "in time (a tolerance far too small for the size of the parts?)",
+                                     request.tolerance, worst, b - a));
       const double m = 0.5 * (a + b);
       std::vector<Eigen::Isometry3d> middle = motion.maps_at(m, request.bodies);
       refine(a, m, left, middle);
@@ -122,7 +142,9 @@ CompiledMotion compile_motion(const LinkageMotion& motion, const CompileMotionRe
   assert(request.tolerance > 0 && request.initial_step > 0);
   Compiler compiler{motion, request, {}, {}};
   const double turn = std::abs(motion.angle_at(1) - motion.angle_at(0));
-  const int segments = std::max(1, static_cast<int>(std::ceil(turn / request.initial_step - 1e-9)));
+  const double initial = std::ceil(turn / request.initial_step - 1e-9);
+  if (!(initial < request.max_keys)) compiler.too_many_keys();
+  const int segments = std::max(1, static_cast<int>(initial));
   compiler.push(0.0, motion.maps_at(0.0, request.bodies));
   for (int s = 1; s <= segments; ++s) {
     const double a = static_cast<double>(s - 1) / segments, b = s == segments ? 1.0 : static_cast<double>(s) / segments;

@@ -23,6 +23,8 @@ namespace {
 
 double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
 
+constexpr double kMaxMotorAngle = 36000;  // degrees: continuation through Newton blocks walks there
+
 std::string full_vector(const Eigen::Vector3d& v) { return fmt::format("[{}, {}, {}]", v.x(), v.y(), v.z()); }
 std::string full_quaternion(const Eigen::Quaterniond& q) {
   return fmt::format("[{}, {}, {}, {}]", q.w(), q.x(), q.y(), q.z());
@@ -64,8 +66,9 @@ PreparedDrive prepare(const Reconfigurable& scene, int index) {
     fail(path + ".scale", fmt::format("scale must be a positive number, found {}", drive.scale));
   if (!(std::isfinite(drive.tolerance) && drive.tolerance > 0))
     fail(path + ".tolerance", fmt::format("tolerance must be a positive number, found {}", drive.tolerance));
-  if (!std::isfinite(drive.from)) fail(path + ".motor.from", "motor angle must be a finite number");
-  if (!std::isfinite(drive.to)) fail(path + ".motor.to", "motor angle must be a finite number");
+  for (const auto& [angle, field] : {std::pair{drive.from, ".motor.from"}, std::pair{drive.to, ".motor.to"}})
+    if (!(std::abs(angle) <= kMaxMotorAngle))
+      fail(path + field, fmt::format("motor angles must lie within ±{}° (100 turns), found {}", kMaxMotorAngle, angle));
   if (!drive.plane.translation.allFinite()) fail(path + ".plane.translation", "coordinates must be finite numbers");
   if (!drive.plane.rotation.coeffs().allFinite() || std::abs(drive.plane.rotation.norm() - 1.0) > 1e-3)
     fail(path + ".plane.rotation", "quaternion must have unit length");
@@ -150,7 +153,7 @@ void compile_linkage_drive(Reconfigurable& scene, int index, DriveStatePoses sta
   try {
     compiled = linkage::compile_motion(motion, request);
   } catch (const InputError& error) {
-    fail(motor, error.message());
+    fail(error.location().empty() ? path + ".linkage" : path + ".linkage." + error.location(), error.message());
   }
 
   // The end states: the drive defines the poses of the parts it carries. Checked before
@@ -223,7 +226,8 @@ std::vector<motion::Pose> linkage_drive_poses(const Reconfigurable& scene, int t
     try {
       poses.push_back(motion::Pose::from_isometry(motion.maps_at(t, {body}).front(), body.center));
     } catch (const InputError& error) {
-      fail(fmt::format("transitions[{}].linkage.motor", transition), error.message());
+      const std::string drive_path = fmt::format("transitions[{}].linkage", transition);
+      fail(error.location().empty() ? drive_path : drive_path + "." + error.location(), error.message());
     }
   }
   return poses;

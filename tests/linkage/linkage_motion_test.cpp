@@ -217,8 +217,25 @@ TEST(LinkageMotion, BreakingTheLinkageIsAnInputError) {
     compile_motion(motion, request);
     FAIL() << "expected an InputError";
   } catch (const InputError& error) {
+    EXPECT_EQ(error.location(), "motor");
     EXPECT_NE(std::string(error.what()).find("cannot be reconstructed at motor angle"), std::string::npos)
         << error.what();
+  }
+}
+
+TEST(LinkageMotion, MotionsThatNeedTooManyKeysAreInputErrors) {
+  const Linkage linkage = test::example("jansen.json");
+  const SymbolicKinematics kinematics(linkage, order_joints(linkage));
+  const LinkageMotion motion(kinematics, tilted_plane(), 0.0, 2 * kPi);
+  for (const auto& [keys, tolerance] : {std::pair{10, 1e-3}, std::pair{50, 1e-4}, std::pair{20000, 1e-16}}) {
+    CompileMotionRequest request = jansen_bodies(linkage, tolerance);
+    request.max_keys = keys;
+    try {
+      compile_motion(motion, request);
+      ADD_FAILURE() << "expected an InputError for " << keys << " keys, tolerance " << tolerance;
+    } catch (const InputError& error) {
+      EXPECT_EQ(error.location(), "tolerance") << error.what();
+    }
   }
 }
 

@@ -11,6 +11,7 @@
 #include <functional>
 #include <nlohmann/json.hpp>
 #include <numbers>
+#include <random>
 
 #include "reconfig/common/input_error.h"
 #include "reconfig/linkage/joint_order.h"
@@ -308,6 +309,12 @@ INSTANTIATE_TEST_SUITE_P(
                    drive(d)["motor"] = {{"from", -130}, {"to", -90}};
                  },
                  "transitions[0].linkage.motor", "cannot turn from -130.0° to -90.0°: the linkage rocks between"},
+        BadDrive{"MotorTurnsTooFar", [](json& d) { drive(d)["motor"]["to"] = 1e300; },
+                 "transitions[0].linkage.motor.to", "motor angles must lie within ±36000°"},
+        BadDrive{"ToleranceTooSmall", [](json& d) { drive(d)["tolerance"] = 1e-15; },
+                 "transitions[0].linkage.tolerance", "cannot be followed within 1e-15"},
+        BadDrive{"PlaneTooFar", [](json& d) { drive(d)["plane"]["translation"] = {1e300, 0, 0}; },
+                 "transitions[0].linkage.tolerance", "cannot be followed"},
         BadDrive{"UnknownState", [](json& d) { d["transitions"][0]["to"] = "nowhere"; }, "transitions[0].to",
                  "unknown state \"nowhere\""}),
     [](const ::testing::TestParamInfo<BadDrive>& param_info) { return param_info.param.what; });
@@ -417,6 +424,52 @@ TEST(LinkageDriveEdits, SetLinkageDriveIsUndoable) {
   EXPECT_EQ(saved["transitions"][0]["tracks"]["crank"]["interpolation"], "screw");
   EXPECT_NO_THROW(parse(saved));
   EXPECT_THROW(history.execute(scene, set_linkage_drive("nowhere", drive)), InputError);
+}
+
+}  // namespace
+}  // namespace reconfig::scene
+
+namespace reconfig::scene {
+namespace {
+
+/// Every leaf of `value` (objects and arrays walked), as JSON pointers.
+void leaves(const json& value, const std::string& at, std::vector<std::string>& out) {
+  if (value.is_object()) {
+    for (const auto& item : value.items()) leaves(item.value(), at + "/" + item.key(), out);
+  } else if (value.is_array()) {
+    for (std::size_t i = 0; i < value.size(); ++i) leaves(value[i], at + "/" + std::to_string(i), out);
+  }
+  out.push_back(at);  // containers too: replacing a whole object is a mutation as well
+}
+
+// Fuzz: random replacements anywhere in a driven transition give an InputError or a valid
+// scene — never another exception, a crash or a hang.
+TEST(LinkageDriveFuzz, RandomMutationsAreInputErrors) {
+  std::mt19937 rng(4);
+  const json base = driven_scene();
+  std::vector<std::string> paths;
+  leaves(base["transitions"][0], "/transitions/0", paths);
+  const std::vector<json> values = {nullptr, 0, -1, 1e300, -7.5, 720, "B", "", "Q", true,
+                                    json::array(), json::array({1, 2}), json::array({"A", "A"}),
+                                    json::array({0, 0, 0, 0}), json::object(), json::parse(R"({"from": 0})")};
+  int loaded = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    json document = base;
+    const int mutations = 1 + static_cast<int>(rng() % 3);
+    for (int m = 0; m < mutations; ++m) {
+      const json::json_pointer at(paths[rng() % paths.size()]);
+      if (!document.contains(at)) continue;
+      document[at] = values[rng() % values.size()];
+    }
+    try {
+      parse(document);
+      ++loaded;
+    } catch (const InputError&) {
+    } catch (const std::exception& error) {
+      ADD_FAILURE() << "not an InputError: " << error.what() << "\n" << document["transitions"][0].dump();
+    }
+  }
+  EXPECT_GT(loaded, 0);  // some mutations are harmless (a motor angle, a tolerance, ...)
 }
 
 }  // namespace

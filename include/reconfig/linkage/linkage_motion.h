@@ -77,7 +77,8 @@ class LinkageMotion {
   bool joints_at(double t, Eigen::Matrix2Xd& X, ReconstructionFailure* failure = nullptr) const;
 
   /// The rigid maps of `bodies` at time t (rest point ↦ world point).
-  /// @throws reconfig::InputError (without file or location) if the linkage breaks at t
+  /// @throws reconfig::InputError (without file, location "motor") if the linkage breaks at t,
+  ///         (location "") if a map is not finite (a placement too large for doubles)
   std::vector<Eigen::Isometry3d> maps_at(double t, const std::vector<AttachedBody>& bodies) const;
 
  private:
@@ -97,9 +98,11 @@ struct CompileMotionRequest {
   int checks_per_segment = 16;
   /// Initial segments: one per `initial_step` radians of motor turn (at least one).
   double initial_step = 10.0 * 3.14159265358979323846 / 180.0;
-  /// Refinement stops splitting segments shorter than this (in t); such a segment is kept
-  /// and its deviation reported in `deviation`.
+  /// Shortest segment (in t) refinement may produce; needing a shorter one is an error.
   double min_segment = 1e-7;
+  /// Most key times the motion may take; more is an error (a tolerance far too small for the
+  /// size of the bodies, or a motor turning thousands of times).
+  int max_keys = 20000;
 };
 
 /// Key poses for each body on common key times 0 = t_0 < ... < t_n = 1.
@@ -109,12 +112,15 @@ struct CompiledMotion {
   /// normalized.
   std::vector<std::vector<motion::ScrewKey>> keys;
   /// The largest distance measured at the check times between the screw interpolation of the
-  /// keys and the true motion (≤ tolerance / 2 unless a segment hit `min_segment`).
+  /// keys and the true motion (≤ tolerance / 2).
   double deviation = 0.0;
 };
 
 /// Samples the true motion adaptively (deterministic bisection of segments) into screw keys.
-/// @throws reconfig::InputError (without file or location) if the linkage breaks on the way
+/// @throws reconfig::InputError without a file, its location naming the request field to
+///         blame: "motor" if the linkage breaks on the way, "tolerance" if more than
+///         `max_keys` keys or a segment shorter than `min_segment` would be needed, "" if a
+///         placement is not finite
 CompiledMotion compile_motion(const LinkageMotion& motion, const CompileMotionRequest& request);
 
 }  // namespace reconfig::linkage
