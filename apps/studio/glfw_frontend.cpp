@@ -15,7 +15,8 @@ namespace reconfig::studio {
 
 static_assert(keys::kSpace == GLFW_KEY_SPACE && keys::kI == GLFW_KEY_I && keys::kZ == GLFW_KEY_Z &&
               keys::kDelete == GLFW_KEY_DELETE && keys::kLeft == GLFW_KEY_LEFT && keys::kRight == GLFW_KEY_RIGHT &&
-              keys::kEscape == GLFW_KEY_ESCAPE && keys::kEnd == GLFW_KEY_END && keys::kS == GLFW_KEY_S,
+              keys::kEscape == GLFW_KEY_ESCAPE && keys::kEnd == GLFW_KEY_END && keys::kS == GLFW_KEY_S &&
+                  keys::kO == GLFW_KEY_O,
               "keys.h must use GLFW's key codes");
 
 void run_in_window(StudioOptions options, const std::optional<std::filesystem::path>& scene, int width, int height,

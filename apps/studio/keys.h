@@ -11,6 +11,7 @@ constexpr int kA = 65;  ///< letters are their upper-case ASCII codes
 constexpr int kF = 70;
 constexpr int kG = 71;
 constexpr int kI = 73;
+constexpr int kO = 79;
 constexpr int kS = 83;
 constexpr int kZ = 90;
 constexpr int kEscape = 256;

@@ -7,7 +7,7 @@ namespace reconfig::studio {
 void Studio::draw_menu_bar() {
   if (!ImGui::BeginMainMenuBar()) return;
   if (ImGui::BeginMenu("File")) {
-    if (ImGui::MenuItem("Open...")) show_open_dialog_ = true;
+    if (ImGui::MenuItem("Open...", "Ctrl+O")) show_open_dialog_ = true;
     if (ImGui::MenuItem("Save", "Ctrl+S", false, document_ != nullptr)) save();
     if (ImGui::MenuItem("Save as...", nullptr, false, document_ != nullptr)) {
       save_path_input_ = document_->file().string();

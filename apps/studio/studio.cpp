@@ -122,6 +122,8 @@ void Studio::handle_shortcuts() {
     else undo();
   } else if (ctrl && ImGui::IsKeyPressed(keys::kS, false)) {
     save();
+  } else if (ctrl && ImGui::IsKeyPressed(keys::kO, false)) {
+    show_open_dialog_ = true;
   } else if (!ctrl) {
     if (ImGui::IsKeyPressed(keys::kSpace, false)) toggle_play();
     if (ImGui::IsKeyPressed(keys::kLeft)) step(-1);

@@ -53,7 +53,7 @@ void Studio::draw_viewport() {
     ImGui::GetWindowDrawList()->AddText({origin.x + 10, origin.y + 8}, IM_COL32(40, 40, 50, 255), caption.c_str());
   } else {
     ImGui::GetWindowDrawList()->AddText({origin.x + 20, origin.y + 20}, IM_COL32(60, 60, 70, 255),
-                                        "No design open: File > Open, or reconfig-studio SCENE.json");
+                                        "No design open: File > Open (Ctrl+O), or reconfig-studio SCENE.json");
   }
   ImGui::End();
 }
