@@ -6,7 +6,7 @@ namespace reconfig::studio {
 
 PanelRects panel_rects(ImVec2 size, float menu, float status) {
   const float left = std::clamp(size.x * 0.24f, 220.0f, 340.0f);
-  const float timeline = std::clamp(size.y * 0.24f, 150.0f, 230.0f);
+  const float timeline = std::clamp(size.y * 0.26f, 176.0f, 230.0f);
   const float body = std::max(size.y - menu - status, 1.0f);
   const float graph = body * 0.42f;
   PanelRects rects;

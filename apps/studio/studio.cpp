@@ -327,7 +327,11 @@ void Studio::draw_status_bar() {
     std::string line;
     const bool current = snapshot->complete && snapshot->version == document_->version();
     if (!current) {
-      line = "collisions: detecting...";
+      std::size_t done = 0;
+      for (const auto& transition : snapshot->transitions)
+        done += transition.up_to_date && snapshot->version == document_->version();
+      line = fmt::format("collisions: detecting... {} of {} transitions done", done,
+                         document_->scene().transitions.size());
     } else {
       std::size_t count = 0;
       for (const auto& transition : snapshot->transitions) count += transition.intervals.size();
