@@ -4,6 +4,8 @@
 #include <cassert>
 #include <cmath>
 
+#include "reconfig/geometry/bounding_box.h"
+
 
 namespace reconfig::render {
 
@@ -26,8 +28,8 @@ namespace {
 
 /// The box of `mesh`'s rest bounding box corners under `placement` (contains the posed mesh).
 Eigen::AlignedBox3d placed_box(const geometry::Mesh& mesh, const Eigen::Isometry3d& placement) {
-  Eigen::AlignedBox3d rest, placed;
-  for (Eigen::Index v = 0; v < mesh.V.rows(); ++v) rest.extend(Eigen::Vector3d(mesh.V.row(v).transpose()));
+  const Eigen::AlignedBox3d rest = geometry::bounding_box(mesh.V);
+  Eigen::AlignedBox3d placed;
   if (rest.isEmpty()) return placed;
   for (int corner = 0; corner < 8; ++corner)
     placed.extend(placement * rest.corner(static_cast<Eigen::AlignedBox3d::CornerType>(corner)));
@@ -67,9 +69,7 @@ DrawList scene_draw_list(const scene::Reconfigurable& scene, const SceneDrawRequ
     poses.push_back(pose_of(p, request.time));
     MeshItem item = item_for(p, poses.back());
     item.highlighted = std::find(request.selected.begin(), request.selected.end(), p) != request.selected.end();
-    if (resident) bounds.extend(placed_box(*item.rest, item.placement));
-    else
-      for (Eigen::Index v = 0; v < item.V.rows(); ++v) bounds.extend(Eigen::Vector3d(item.V.row(v).transpose()));
+    bounds.extend(resident ? placed_box(*item.rest, item.placement) : geometry::bounding_box(item.V));
     list.meshes.push_back(std::move(item));
   }
   if (request.transition >= 0) {
