@@ -16,10 +16,10 @@
 #include <cstring>
 #include <filesystem>
 #include <iostream>
-#include <numeric>
 #include <string>
 #include <vector>
 
+#include "frame_times.h"
 #include "frontend.h"
 #include "reconfig/scene/scene_file.h"
 #include "scenes.h"
@@ -31,8 +31,8 @@ namespace fs = std::filesystem;
 
 struct Stats {
   std::string scene, phase;
-  int triangles = 0, frames = 0;
-  double median = 0, p95 = 0, max = 0, mean = 0;
+  int triangles = 0;
+  studio::FrameTimes times;
   bool detecting_throughout = false;
 };
 
@@ -52,14 +52,8 @@ Stats measure(studio::HeadlessFrontend& frontend, int frames, bool while_detecti
     detecting = detecting && !(snapshot->complete && snapshot->version == studio.document()->version());
     if (while_detecting && !detecting) break;
   }
-  std::vector<double> sorted = times;
-  std::sort(sorted.begin(), sorted.end());
   Stats stats;
-  stats.frames = static_cast<int>(times.size());
-  stats.mean = std::accumulate(times.begin(), times.end(), 0.0) / times.size();
-  stats.median = sorted[sorted.size() / 2];
-  stats.p95 = sorted[std::min(sorted.size() - 1, sorted.size() * 95 / 100)];
-  stats.max = sorted.back();
+  stats.times = studio::summarize_frame_times(times);
   stats.detecting_throughout = detecting;
   return stats;
 }
@@ -126,7 +120,8 @@ int main(int argc, char** argv) {
       std::cout << fmt::format(
           R"(  {{"scene": "{}", "phase": "{}", "triangles": {}, "width": {}, "height": {}, "frames": {}, )"
           R"("mean_ms": {:.2f}, "median_ms": {:.2f}, "p95_ms": {:.2f}, "max_ms": {:.2f}, "detecting_throughout": {}}}{})",
-          s.scene, s.phase, s.triangles, width, height, s.frames, s.mean, s.median, s.p95, s.max,
+          s.scene, s.phase, s.triangles, width, height, s.times.frames, s.times.mean, s.times.median, s.times.p95,
+          s.times.max,
           s.detecting_throughout, i + 1 < results.size() ? "," : "") << "\n";
     }
     std::cout << "]\n";
@@ -136,7 +131,7 @@ int main(int argc, char** argv) {
                              "frames", "median", "p95", "max");
     for (const Stats& s : results)
       std::cout << fmt::format("{:<26} {:<30} {:>9} {:>7} {:>6.1f} ms {:>6.1f} ms {:>6.1f} ms\n", s.scene, s.phase,
-                               s.triangles, s.frames, s.median, s.p95, s.max);
+                               s.triangles, s.times.frames, s.times.median, s.times.p95, s.times.max);
   }
   return 0;
 }

@@ -10,9 +10,9 @@
 #include <algorithm>
 #include <fstream>
 #include <iostream>
-#include <numeric>
 #include <sstream>
 
+#include "frame_times.h"
 #include "frontend.h"
 #include "reconfig/common/write_atomically.h"
 #include "reconfig/render/image.h"
@@ -58,14 +58,11 @@ int run_headless(const Options& options, int width, int height) {
   for (int i = 0; i < options.frames; ++i) times.push_back(frontend.run_frame());
   if (!options.screenshot.empty()) render::write_png(options.screenshot, frontend.screenshot());
   if (!options.frame_times.empty() && !times.empty()) {
-    std::vector<double> sorted = times;
-    std::sort(sorted.begin(), sorted.end());
-    const double mean = std::accumulate(times.begin(), times.end(), 0.0) / times.size();
+    const studio::FrameTimes stats = studio::summarize_frame_times(times);
     write_atomically(options.frame_times, [&](std::ostream& out) {
       out << fmt::format(R"({{"frames": {}, "width": {}, "height": {}, "mean_ms": {:.3f}, "median_ms": {:.3f}, )"
                          R"("p95_ms": {:.3f}, "max_ms": {:.3f}}})",
-                         times.size(), width, height, mean, sorted[sorted.size() / 2],
-                         sorted[std::min(sorted.size() - 1, sorted.size() * 95 / 100)], sorted.back())
+                         stats.frames, width, height, stats.mean, stats.median, stats.p95, stats.max)
           << "\n";
     });
   }
