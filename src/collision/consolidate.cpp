@@ -2,48 +2,32 @@
 
 #include <algorithm>
 
+#include "collision/detail/interval_merging.h"
+
 namespace reconfig::collision {
 namespace {
 
-constexpr double kAdjacent = 1e-12;  ///< time gap under which two extents count as touching
-
-void add_part(std::vector<int>& parts, int part) {
-  const auto at = std::lower_bound(parts.begin(), parts.end(), part);
-  if (at == parts.end() || *at != part) parts.insert(at, part);
-}
-
-bool boxes_meet(const Eigen::AlignedBox3d& a, const Eigen::AlignedBox3d& b) {
-  return (a.min().array() <= b.max().array()).all() && (b.min().array() <= a.max().array()).all();
-}
-
-bool times_meet(const CollisionInterval& a, const CollisionInterval& b) {
-  return a.t0 <= b.t1 + kAdjacent && b.t0 <= a.t1 + kAdjacent;
-}
-
-void absorb(CollisionInterval& into, const CollisionInterval& other) {
-  into.t0 = std::min(into.t0, other.t0);
-  into.t1 = std::max(into.t1, other.t1);
-  into.box.extend(other.box);
-  for (int p : other.parts) add_part(into.parts, p);
-  into.containment = into.containment || other.containment;
-  into.possible = into.possible && other.possible;
-  into.triangles.insert(into.triangles.end(), other.triangles.begin(), other.triangles.end());
-}
-
 bool can_merge(const CollisionInterval& a, const CollisionInterval& b, double max_duration) {
-  return times_meet(a, b) && boxes_meet(a.box, b.box) &&
+  return detail::intervals_meet(a, b) &&
          std::max(a.t1, b.t1) - std::min(a.t0, b.t0) <= max_duration;
 }
 
 }  // namespace
 
+CollisionInterval contact_interval(const TriangleContact& c) {
+  return {c.t0, c.t1, {c.part_a, c.part_b}, c.box, false, c.possible, {{c.part_a, c.triangle_a, c.part_b, c.triangle_b}}};
+}
+
 std::vector<CollisionInterval> consolidate(const std::vector<TriangleContact>& contacts,
                                            const std::vector<Containment>& containments, double max_duration) {
   std::vector<CollisionInterval> items;
-  items.reserve(contacts.size() + containments.size());
-  for (const TriangleContact& c : contacts)
-    items.push_back({c.t0, c.t1, {c.part_a, c.part_b}, c.box, false, c.possible,
-                     {{c.part_a, c.triangle_a, c.part_b, c.triangle_b}}});
+  items.reserve(contacts.size());
+  for (const TriangleContact& c : contacts) items.push_back(contact_interval(c));
+  return consolidate(std::move(items), containments, max_duration);
+}
+
+std::vector<CollisionInterval> consolidate(std::vector<CollisionInterval> items,
+                                           const std::vector<Containment>& containments, double max_duration) {
   for (const Containment& c : containments)
     items.push_back({c.t0, c.t1, {std::min(c.inner, c.outer), std::max(c.inner, c.outer)}, c.box, true, false, {}});
   std::stable_sort(items.begin(), items.end(),
@@ -59,11 +43,11 @@ std::vector<CollisionInterval> consolidate(const std::vector<TriangleContact>& c
     std::vector<CollisionInterval> next;
     std::vector<std::size_t> open;  // indices into next that may still meet later groups
     for (CollisionInterval& group : groups) {
-      std::erase_if(open, [&](std::size_t g) { return next[g].t1 + kAdjacent < group.t0; });
+      std::erase_if(open, [&](std::size_t g) { return next[g].t1 + detail::kAdjacent < group.t0; });
       bool joined = false;
       for (const std::size_t g : open)
         if (can_merge(next[g], group, max_duration)) {
-          absorb(next[g], group);
+          detail::absorb(next[g], group);
           joined = merged = true;
           break;
         }

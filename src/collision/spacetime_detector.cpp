@@ -9,6 +9,8 @@
 #include <map>
 #include <set>
 
+#include "collision/detail/frame_contacts.h"
+#include "reconfig/collision/frame_grid.h"
 #include "reconfig/collision/triangle_pair_ccd.h"
 #include "reconfig/geometry/bounding_box.h"
 #include "reconfig/geometry/point_in_solid.h"
@@ -43,15 +45,28 @@ Affine proxy_map(const PartProxy& proxy, double t) {
 /// on every step between consecutive times both parts' vertices move linearly.
 struct PairTimeline {
   int a = 0, b = 0;
+  int first_frame = 0, last_frame = 0;  ///< the frames this range owns (whole frames)
   std::vector<double> times;
   std::vector<Affine> maps[2];
   bool moving[2] = {false, false};  ///< some map differs from the first
 };
 
-PairTimeline make_timeline(const std::vector<PartProxy>& proxies, int a, int b, double t0, double t1) {
+/// The pair's timeline over frames [first, last]: from the last sample time (of either part's
+/// proxy, or 0) at or before the first frame's start to the first one at or after the last
+/// frame's end, so that its steps are those of the whole transition's timeline.
+PairTimeline make_timeline(const std::vector<PartProxy>& proxies, const FrameGrid& grid, int a, int b, int first,
+                           int last) {
   PairTimeline line;
   line.a = a;
   line.b = b;
+  line.first_frame = first;
+  line.last_frame = last;
+  double t0 = 0, t1 = 1;
+  for (int part : {a, b})
+    for (double t : proxies[part].times) {
+      if (t <= grid.lo(first)) t0 = std::max(t0, t);
+      if (t >= grid.hi(last)) t1 = std::min(t1, t);
+    }
   std::vector<double> times = {t0, t1};
   for (int part : {a, b})
     for (double t : proxies[part].times)
@@ -67,11 +82,20 @@ PairTimeline make_timeline(const std::vector<PartProxy>& proxies, int a, int b, 
   return line;
 }
 
+Eigen::AlignedBox3d inflated(Eigen::AlignedBox3d box, double by) {
+  box.min().array() -= by;
+  box.max().array() += by;
+  return box;
+}
+
 struct WorkItem {
   int pair = 0;
   int node_a = 0, node_b = 0;
   int s0 = 0, s1 = 0;  ///< sample range of the pair timeline (s1 > s0)
 };
+
+/// Per pair timeline and frame (indexed from the timeline's first frame), what was found.
+using FoundFrames = std::vector<std::vector<detail::FrameContacts>>;
 
 /// Everything the traversal reads, shared by all threads.
 template <DopFamily family>
@@ -83,6 +107,7 @@ struct Traversal {
   const BodyTrees& trees;
   const std::vector<PartProxy>& proxies;
   const DetectorOptions& options;
+  const FrameGrid grid;
   std::vector<PairTimeline> lines;
   /// Per pair, side and sample: u_i = Lᵀ ds_i and the offset ds_i·x + dt_i τ of each axis.
   struct SampleAxes {
@@ -94,7 +119,7 @@ struct Traversal {
 
   Traversal(const scene::Reconfigurable& s, const BodyTrees& t, const std::vector<PartProxy>& p,
             const DetectorOptions& o, std::vector<PairTimeline> l)
-      : scene(s), trees(t), proxies(p), options(o), lines(std::move(l)) {
+      : scene(s), trees(t), proxies(p), options(o), grid(o.frame), lines(std::move(l)) {
     const auto& dirs = dop_axes<family>();
     double scale = 1;
     axes.resize(lines.size());
@@ -152,6 +177,44 @@ struct Traversal {
     return dop;
   }
 
+  /// The spatial box of a node over the time range [t0, t1] of the pair's timeline, padded
+  /// like `bound` (and grown by `deviation`): that of its placements at t0, t1 and the samples
+  /// between, as it moves linearly in between.
+  Eigen::AlignedBox3d box_between(int pair, int side, int node_index, double t0, double t1, double deviation) const {
+    const PairTimeline& line = lines[pair];
+    const BodyTree::Node& node = tree(pair, side).node(node_index);
+    const geometry::Mesh& m = mesh(pair, side);
+    Eigen::AlignedBox3d box;
+    const auto extend = [&](const Affine& map) {
+      if (node.leaf()) {
+        for (int c = 0; c < 3; ++c) box.extend(map(m.V.row(m.F(node.triangle, c))));
+      } else {
+        const Eigen::Vector3d center = map(node.center), reach = map.L.cwiseAbs() * node.half;
+        box.extend(center - reach);
+        box.extend(center + reach);
+      }
+    };
+    const auto at = [&](double t) {
+      const int s = std::clamp(static_cast<int>(std::upper_bound(line.times.begin(), line.times.end(), t) - line.times.begin()) - 1,
+                               0, static_cast<int>(line.times.size()) - 2);
+      const double mu = std::clamp((t - line.times[s]) / (line.times[s + 1] - line.times[s]), 0.0, 1.0);
+      const Affine& p0 = line.maps[side][s];
+      const Affine& p1 = line.maps[side][s + 1];
+      return Affine{(1 - mu) * p0.L + mu * p1.L, (1 - mu) * p0.x + mu * p1.x};
+    };
+    extend(at(t0));
+    extend(at(t1));
+    for (std::size_t k = 0; k < line.times.size(); ++k)
+      if (line.times[k] > t0 && line.times[k] < t1) extend(line.maps[side][k]);
+    return inflated(box, pad + deviation);
+  }
+
+  /// How far apart two contacts of a pair of parts in one frame may lie and still be grouped.
+  double gap(int pair) const {
+    const auto diagonal = [&](int side) { return 2 * tree(pair, side).node(BodyTree::kRoot).half.norm(); };
+    return options.group_gap * std::min(diagonal(0), diagonal(1));
+  }
+
   MovingTriangle corners(int pair, int side, int triangle, int s) const {
     const geometry::Mesh& m = mesh(pair, side);
     const Affine& map = lines[pair].maps[side][s];
@@ -170,9 +233,13 @@ Eigen::AlignedBox3d triangle_box_at(const MovingTriangle& p0, const MovingTriang
   return box;
 }
 
-Eigen::AlignedBox3d meeting_box(const Eigen::AlignedBox3d& a, const Eigen::AlignedBox3d& b) {
+/// Where two boxes swept by triangles that intersect meet: their intersection, which
+/// rounding can leave empty by less than `pad`.
+Eigen::AlignedBox3d meeting_box(const Eigen::AlignedBox3d& a, const Eigen::AlignedBox3d& b, double pad) {
   const Eigen::AlignedBox3d both = a.intersection(b);
-  return both.isEmpty() ? a.merged(b) : both;  // empty only through rounding
+  if (!both.isEmpty()) return both;
+  const Eigen::AlignedBox3d padded = inflated(a, pad).intersection(inflated(b, pad));
+  return padded.isEmpty() ? a.merged(b) : padded;
 }
 
 /// The pieces k (bit k) of `kCullPieces` equal pieces of a time step where the spacetime
@@ -222,44 +289,144 @@ unsigned meeting_pieces(const MovingTriangle& a0, const MovingTriangle& a1, cons
 /// Two leaves over at most this many steps are bounded step by step.
 constexpr int kStepwiseLeafSteps = 8;
 
+/// The spatial box of a k-DOP: its first three axes are x, y and z in every family.
+template <DopFamily family>
+Eigen::AlignedBox3d spatial_box(const Kdop<family>& dop) {
+  return {Eigen::Vector3d(dop.lo[0], dop.lo[1], dop.lo[2]), Eigen::Vector3d(dop.hi[0], dop.hi[1], dop.hi[2])};
+}
+
+/// A contact and the pair timeline it was found on.
+struct LineContact {
+  int line = 0;
+  TriangleContact contact;
+};
+
+/// The groups found so far that pruning may rely on: all of every pair timeline's frames
+/// (breadth first), or those of one step's frames, found within that step (depth first).
+struct FrameLookup {
+  const FoundFrames* lines = nullptr;
+  const std::vector<detail::FrameContacts>* step = nullptr;
+  int step_first_frame = 0;
+
+  const detail::FrameContacts& operator()(int line, int first_frame, int k) const {
+    return step ? (*step)[k - step_first_frame] : (*lines)[line][k - first_frame];
+  }
+};
+
+/// What one work item reads of the contacts found so far, and where its own contacts go.
+struct ItemContext {
+  FrameLookup found;
+  std::vector<LineContact>& contacts;  ///< contacts the item finds, clipped to frames
+  DetectionStats& stats;
+};
+
+/// The frame a contact clipped to frames lies in.
+int frame_of_contact(const FrameGrid& grid, const TriangleContact& c) { return grid.frame_of((c.t0 + c.t1) / 2); }
+
+/// The frames an item may report contacts in: those its time range overlaps for a positive
+/// time among the ones its timeline owns (an instant contact at its start belongs to the
+/// frame on the left, where the previous step reports it).
+template <DopFamily family>
+std::pair<int, int> item_frames(const Traversal<family>& tr, const WorkItem& item) {
+  const PairTimeline& line = tr.lines[item.pair];
+  const auto [first, last] = tr.grid.frames_overlapping(line.times[item.s0], line.times[item.s1]);
+  return {std::max(first, line.first_frame), std::min(last, line.last_frame)};
+}
+
+/// Whether every contact the item could find would fall inside a group its frames already
+/// have: in each frame k, within the item's time range clipped to the frame, [t0, t1], and
+/// within `box_between(t0, t1)`, the box where the item's contacts over that time can lie.
+template <DopFamily family>
+bool covered(const Traversal<family>& tr, const WorkItem& item, const ItemContext& context, const auto& box_between) {
+  if (tr.options.all_contacts) return false;
+  const PairTimeline& line = tr.lines[item.pair];
+  const auto [first, last] = item_frames(tr, item);
+  const auto window = [&](int k) {
+    return std::pair{std::max(line.times[item.s0], tr.grid.lo(k)), std::min(line.times[item.s1], tr.grid.hi(k))};
+  };
+  // A frame whose window the item's box cannot reach (empty box) has nothing to find.
+  // The cheap test first: are the times covered at all?
+  for (int k = first; k <= last; ++k) {
+    const auto [t0, t1] = window(k);
+    if (context.found(item.pair, line.first_frame, k).covers_time(t0, t1)) continue;
+    if (!box_between(t0, t1).isEmpty()) return false;
+  }
+  for (int k = first; k <= last; ++k) {
+    const auto [t0, t1] = window(k);
+    const Eigen::AlignedBox3d box = box_between(t0, t1);
+    if (!box.isEmpty() && !context.found(item.pair, line.first_frame, k).covers(t0, t1, box)) return false;
+  }
+  return true;
+}
+
 /// Processes one work item: prunes it, splits it into `next`, or runs the narrow phase.
 template <DopFamily family>
-void process(const Traversal<family>& tr, const WorkItem& item, std::vector<WorkItem>& next,
-             std::vector<TriangleContact>& found, DetectionStats& stats) {
+void process(const Traversal<family>& tr, const WorkItem& item, std::vector<WorkItem>& next, const ItemContext& context) {
+  DetectionStats& stats = context.stats;
   const PairTimeline& line = tr.lines[item.pair];
   const BodyTree::Node& na = tr.tree(item.pair, 0).node(item.node_a);
   const BodyTree::Node& nb = tr.tree(item.pair, 1).node(item.node_b);
   const bool single_step = item.s1 - item.s0 == 1;
+  const double deviation_a = tr.options.conservative ? tr.proxies[line.a].deviation : 0.0;
+  const double deviation_b = tr.options.conservative ? tr.proxies[line.b].deviation : 0.0;
   Kdop<family> da, db;
   if (!(na.leaf() && nb.leaf() && single_step)) {  // that case is culled by `meeting_pieces`, tighter
     ++stats.bound_tests;
     da = tr.bound(item.pair, 0, item.node_a, item.s0, item.s1);
     db = tr.bound(item.pair, 1, item.node_b, item.s0, item.s1);
     if (!da.overlaps(db)) return;
+    const auto box_between = [&](double t0, double t1) {
+      if (t0 <= line.times[item.s0] && t1 >= line.times[item.s1]) return spatial_box(da).intersection(spatial_box(db));
+      return tr.box_between(item.pair, 0, item.node_a, t0, t1, deviation_a)
+          .intersection(tr.box_between(item.pair, 1, item.node_b, t0, t1, deviation_b));
+    };
+    if (covered(tr, item, context, box_between)) {
+      ++stats.pruned;
+      return;
+    }
   }
+  const auto push = [&](int node_a, int node_b, int s0, int s1) { next.push_back({item.pair, node_a, node_b, s0, s1}); };
   const auto split_time = [&] {
     const int middle = (item.s0 + item.s1) / 2;
-    next.push_back({item.pair, item.node_a, item.node_b, item.s0, middle});
-    next.push_back({item.pair, item.node_a, item.node_b, middle, item.s1});
+    push(item.node_a, item.node_b, item.s0, middle);
+    push(item.node_a, item.node_b, middle, item.s1);
   };
   if (na.leaf() && nb.leaf()) {
+    const auto [first_frame, last_frame] = item_frames(tr, item);
     // The narrow phase of the two triangles over samples [s0, s1]: one step, or a range over
     // which both hold still.
     const auto leaves = [&](int s0, int s1) {
       const double t0 = line.times[s0], t1 = line.times[s1];
-      TriangleContact contact{line.a, na.triangle, line.b, nb.triangle, t0, t1, {}, false, t0, t1};
-      // Reports the contact over step parameters [mu0, mu1] in pieces no longer than allowed.
+      const auto time_at = [&](double mu) { return mu == 0 ? t0 : mu == 1 ? t1 : t0 + mu * (t1 - t0); };
+      const auto mu_at = [&](double t) { return (t - t0) / (t1 - t0); };
+      // Reports the contact over step parameters [mu0, mu1] clipped to each of the item's frames.
       const auto emit = [&](const MovingTriangle& a0, const MovingTriangle& a1, const MovingTriangle& b0,
-                            const MovingTriangle& b1, double mu0, double mu1) {
-        const double duration = (mu1 - mu0) * (t1 - t0);
-        const int pieces = std::max(1, static_cast<int>(std::ceil(duration / tr.options.max_contact_duration - 1e-9)));
-        for (int k = 0; k < pieces; ++k) {
-          const double lo = mu0 + (mu1 - mu0) * k / pieces;
-          const double hi = k + 1 == pieces ? mu1 : mu0 + (mu1 - mu0) * (k + 1) / pieces;
-          contact.t0 = k == 0 ? t0 + mu0 * (t1 - t0) : t0 + lo * (t1 - t0);
-          contact.t1 = k + 1 == pieces ? t0 + mu1 * (t1 - t0) : t0 + hi * (t1 - t0);
-          contact.box = meeting_box(triangle_box_at(a0, a1, lo, hi), triangle_box_at(b0, b1, lo, hi));
-          found.push_back(contact);
+                            const MovingTriangle& b1, double mu0, double mu1, bool possible) {
+        const auto report = [&](double lo, double hi, double mu_lo, double mu_hi) {
+          Eigen::AlignedBox3d box_a = triangle_box_at(a0, a1, mu_lo, mu_hi);
+          Eigen::AlignedBox3d box_b = triangle_box_at(b0, b1, mu_lo, mu_hi);
+          if (possible) {
+            // Where the true motions may meet within this frame's part of the piece: nowhere
+            // if the grown boxes miss each other there.
+            box_a = inflated(box_a, deviation_a + tr.pad).intersection(inflated(box_b, deviation_b + tr.pad));
+            if (box_a.isEmpty()) return;
+            box_b = box_a;
+          }
+          context.contacts.push_back({item.pair,
+                                      {line.a, na.triangle, line.b, nb.triangle, lo, hi, meeting_box(box_a, box_b, tr.pad),
+                                       possible, t0, t1}});
+        };
+        const double ta = time_at(mu0), tb = time_at(mu1);
+        if (ta == tb) {
+          const int k = tr.grid.frame_of(ta);
+          if (k >= first_frame && k <= last_frame) report(ta, ta, mu0, mu0);
+          return;
+        }
+        const auto [f0, f1] = tr.grid.frames_overlapping(ta, tb);
+        for (int k = std::max(f0, first_frame); k <= std::min(f1, last_frame); ++k) {
+          const bool clip_lo = tr.grid.lo(k) > ta, clip_hi = tr.grid.hi(k) < tb;
+          const double lo = clip_lo ? tr.grid.lo(k) : ta, hi = clip_hi ? tr.grid.hi(k) : tb;
+          if (hi > lo) report(lo, hi, clip_lo ? mu_at(lo) : mu0, clip_hi ? mu_at(hi) : mu1);
         }
       };
       if (s1 - s0 == 1) {
@@ -267,9 +434,17 @@ void process(const Traversal<family>& tr, const WorkItem& item, std::vector<Work
         const MovingTriangle a1 = tr.corners(item.pair, 0, na.triangle, s1);
         const MovingTriangle b0 = tr.corners(item.pair, 1, nb.triangle, s0);
         const MovingTriangle b1 = tr.corners(item.pair, 1, nb.triangle, s1);
-        const double deviation =
-            tr.options.conservative ? tr.proxies[line.a].deviation + tr.proxies[line.b].deviation : 0.0;
-        if (meeting_pieces<family>(a0, a1, b0, b1, deviation + 2 * tr.pad) == 0) return;
+        const WorkItem step{item.pair, item.node_a, item.node_b, s0, s1};
+        const auto box_between = [&](double ta, double tb) {
+          const double mu0 = ta <= t0 ? 0.0 : mu_at(ta), mu1 = tb >= t1 ? 1.0 : mu_at(tb);
+          return inflated(triangle_box_at(a0, a1, mu0, mu1), deviation_a + tr.pad)
+              .intersection(inflated(triangle_box_at(b0, b1, mu0, mu1), deviation_b + tr.pad));
+        };
+        if (covered(tr, step, context, box_between)) {
+          ++stats.pruned;
+          return;
+        }
+        if (meeting_pieces<family>(a0, a1, b0, b1, deviation_a + deviation_b + 2 * tr.pad) == 0) return;
         ++stats.narrow_phase;
         TrianglePairCcdRequest request;
         request.a_start = a0;
@@ -281,12 +456,11 @@ void process(const Traversal<family>& tr, const WorkItem& item, std::vector<Work
         const TrianglePairCcdResult spans = triangle_pair_ccd(request);
         stats.narrow_pieces += spans.pieces;
         stats.contact_tests += spans.contact_tests;
-        for (const auto& [mu0, mu1] : spans.intervals) emit(a0, a1, b0, b1, mu0, mu1);
+        for (const auto& [mu0, mu1] : spans.intervals) emit(a0, a1, b0, b1, mu0, mu1, false);
         if (!spans.any() && tr.options.conservative) {
           // The proxies miss, but the true motions stray up to the deviations from them: report
           // the sixteenths of the step where the triangles' spacetime k-DOPs, so inflated, meet.
-          contact.possible = true;
-          const double reach = tr.proxies[line.a].deviation + tr.proxies[line.b].deviation + tr.pad;
+          const double reach = deviation_a + deviation_b + tr.pad;
           constexpr int kPieces = 16;
           for (int k = 0; k < kPieces; ++k) {
             const double lo = static_cast<double>(k) / kPieces, hi = static_cast<double>(k + 1) / kPieces;
@@ -297,14 +471,7 @@ void process(const Traversal<family>& tr, const WorkItem& item, std::vector<Work
                 dop_b.extend((1 - mu) * b0[c] + mu * b1[c], mu);
               }
             dop_a.inflate(reach);
-            if (!dop_a.overlaps(dop_b)) continue;
-            Eigen::AlignedBox3d box_a = triangle_box_at(a0, a1, lo, hi);
-            box_a.min().array() -= reach;
-            box_a.max().array() += reach;
-            contact.t0 = t0 + lo * (t1 - t0);
-            contact.t1 = t0 + hi * (t1 - t0);
-            contact.box = box_a.intersection(triangle_box_at(b0, b1, lo, hi));
-            found.push_back(contact);
+            if (dop_a.overlaps(dop_b)) emit(a0, a1, b0, b1, lo, hi, true);
           }
         }
         return;
@@ -313,7 +480,7 @@ void process(const Traversal<family>& tr, const WorkItem& item, std::vector<Work
         ++stats.narrow_phase;
         const MovingTriangle a = tr.corners(item.pair, 0, na.triangle, s0);
         const MovingTriangle b = tr.corners(item.pair, 1, nb.triangle, s0);
-        if (geometry::triangles_intersect(a[0], a[1], a[2], b[0], b[1], b[2])) emit(a, a, b, b, 0, 1);
+        if (geometry::triangles_intersect(a[0], a[1], a[2], b[0], b[1], b[2])) emit(a, a, b, b, 0, 1, false);
       }
     };
     if (single_step || (!line.moving[0] && !line.moving[1])) {
@@ -341,11 +508,11 @@ void process(const Traversal<family>& tr, const WorkItem& item, std::vector<Work
   if (!single_step && sweep > std::min(size_a, size_b)) {
     split_time();
   } else if (!na.leaf() && (nb.leaf() || size_a >= size_b)) {
-    next.push_back({item.pair, na.left, item.node_b, item.s0, item.s1});
-    next.push_back({item.pair, na.right, item.node_b, item.s0, item.s1});
+    push(na.left, item.node_b, item.s0, item.s1);
+    push(na.right, item.node_b, item.s0, item.s1);
   } else {
-    next.push_back({item.pair, item.node_a, nb.left, item.s0, item.s1});
-    next.push_back({item.pair, item.node_a, nb.right, item.s0, item.s1});
+    push(item.node_a, nb.left, item.s0, item.s1);
+    push(item.node_a, nb.right, item.s0, item.s1);
   }
 }
 
@@ -359,29 +526,69 @@ std::vector<std::pair<double, double>> union_of(std::vector<std::pair<double, do
   return merged;
 }
 
+bool contact_less(const TriangleContact& x, const TriangleContact& y) {
+  return std::tie(x.t0, x.part_a, x.part_b, x.triangle_a, x.triangle_b, x.t1) <
+         std::tie(y.t0, y.part_a, y.part_b, y.triangle_a, y.triangle_b, y.t1);
+}
+
+void add_stats(DetectionStats& into, const DetectionStats& s) {
+  into.bound_tests += s.bound_tests;
+  into.narrow_phase += s.narrow_phase;
+  into.narrow_pieces += s.narrow_pieces;
+  into.contact_tests += s.contact_tests;
+  into.pruned += s.pruned;
+}
+
+/// Steps processed between two progress reports in the depth-first phase.
+constexpr std::size_t kStepsPerBatch = 16;
+
+/// Records contacts found (in a deterministic order) in their frames' groups.
+void record(std::vector<LineContact>& batch, const std::vector<PairTimeline>& lines, const FrameGrid& grid,
+            FoundFrames& found, std::vector<TriangleContact>& contacts) {
+  std::sort(batch.begin(), batch.end(), [](const LineContact& x, const LineContact& y) {
+    return contact_less(x.contact, y.contact) || (!contact_less(y.contact, x.contact) && x.line < y.line);
+  });
+  for (const LineContact& c : batch) {
+    found[c.line][frame_of_contact(grid, c.contact) - lines[c.line].first_frame].add(c.contact);
+    contacts.push_back(c.contact);
+  }
+  batch.clear();
+}
+
 template <DopFamily family>
-bool run_traversal(const Traversal<family>& tr, std::vector<TriangleContact>& contacts, DetectionStats& stats,
-                   const DetectCallbacks& callbacks) {
+bool run_traversal(const Traversal<family>& tr, FoundFrames& found, std::vector<TriangleContact>& contacts,
+                   DetectionStats& stats, const DetectCallbacks& callbacks) {
+  found.assign(tr.lines.size(), {});
   std::vector<WorkItem> level;
   int max_depth = 1, max_steps = 1;
   for (int i = 0; i < static_cast<int>(tr.lines.size()); ++i) {
-    const int steps = static_cast<int>(tr.lines[i].times.size()) - 1;
+    const PairTimeline& line = tr.lines[i];
+    found[i].resize(line.last_frame - line.first_frame + 1, detail::FrameContacts(tr.gap(i)));
+    const int steps = static_cast<int>(line.times.size()) - 1;
     level.push_back({i, BodyTree::kRoot, BodyTree::kRoot, 0, steps});
     max_depth = std::max(max_depth, tr.tree(i, 0).depth() + tr.tree(i, 1).depth());
     max_steps = std::max(max_steps, steps);
   }
+  const auto found_ranges = [&] {
+    std::vector<std::pair<double, double>> ranges;
+    for (const auto& frames : found)
+      for (const detail::FrameContacts& frame : frames)
+        for (const CollisionInterval& group : frame.groups()) ranges.push_back({group.t0, group.t1});
+    return ranges;
+  };
+
+  // Breadth first: coarse time extents level by level.
   const double expected_levels = max_depth + std::ceil(std::log2(max_steps)) + 1;
   int depth = 0;
-  while (!level.empty()) {
+  while (!level.empty() && level.size() < tr.options.breadth_first_items) {
     ++depth;
     tbb::combinable<std::vector<WorkItem>> next_parts;
-    tbb::combinable<std::vector<TriangleContact>> found_parts;
+    tbb::combinable<std::vector<LineContact>> found_parts;
     tbb::combinable<DetectionStats> stat_parts;
     const auto run = [&](std::size_t begin, std::size_t end) {
       auto& next = next_parts.local();
-      auto& found = found_parts.local();
-      auto& st = stat_parts.local();
-      for (std::size_t i = begin; i < end; ++i) process(tr, level[i], next, found, st);
+      const ItemContext context{{&found, nullptr, 0}, found_parts.local(), stat_parts.local()};
+      for (std::size_t i = begin; i < end; ++i) process(tr, level[i], next, context);
     };
     if (level.size() < 512) run(0, level.size());
     else
@@ -389,34 +596,93 @@ bool run_traversal(const Traversal<family>& tr, std::vector<TriangleContact>& co
                         [&](const tbb::blocked_range<std::size_t>& r) { run(r.begin(), r.end()); });
     std::vector<WorkItem> next;
     next_parts.combine_each([&](const std::vector<WorkItem>& part) { next.insert(next.end(), part.begin(), part.end()); });
-    found_parts.combine_each(
-        [&](const std::vector<TriangleContact>& part) { contacts.insert(contacts.end(), part.begin(), part.end()); });
-    stat_parts.combine_each([&](const DetectionStats& s) {
-      stats.bound_tests += s.bound_tests;
-      stats.narrow_phase += s.narrow_phase;
-      stats.narrow_pieces += s.narrow_pieces;
-      stats.contact_tests += s.contact_tests;
-    });
+    std::vector<LineContact> batch;
+    found_parts.combine_each([&](const std::vector<LineContact>& part) { batch.insert(batch.end(), part.begin(), part.end()); });
+    record(batch, tr.lines, tr.grid, found, contacts);
+    stat_parts.combine_each([&](const DetectionStats& s) { add_stats(stats, s); });
     stats.levels = depth;
     if (callbacks.preview) {
-      std::vector<std::pair<double, double>> ranges;
+      std::vector<std::pair<double, double>> ranges = found_ranges();
       for (const WorkItem& item : next) ranges.push_back({tr.lines[item.pair].times[item.s0], tr.lines[item.pair].times[item.s1]});
-      for (const TriangleContact& c : contacts) ranges.push_back({c.t0, c.t1});
       callbacks.preview({depth, union_of(std::move(ranges))});
     }
-    if (!report_progress(callbacks.progress, std::min(0.99, depth / expected_levels))) return false;
-    // Breadth-first order is the order of discovery; sort for determinism of memory use only.
+    if (!report_progress(callbacks.progress, std::min(0.5, 0.5 * depth / expected_levels))) return false;
+    // Sorted, so that the order of discovery does not depend on the threads.
     std::sort(next.begin(), next.end(), [](const WorkItem& x, const WorkItem& y) {
       return std::tie(x.pair, x.s0, x.node_a, x.node_b, x.s1) < std::tie(y.pair, y.s0, y.node_a, y.node_b, y.s1);
     });
     level = std::move(next);
   }
-  return true;
-}
+  if (level.empty()) return true;
 
-bool contact_less(const TriangleContact& x, const TriangleContact& y) {
-  return std::tie(x.t0, x.part_a, x.part_b, x.triangle_a, x.triangle_b, x.t1) <
-         std::tie(y.t0, y.part_a, y.part_b, y.triangle_a, y.triangle_b, y.t1);
+  // Depth first, one step of one pair timeline at a time (the steps in parallel): contacts
+  // found grow the groups of the step's frames at once, and what they cover is skipped. Each
+  // step prunes with what it found itself, so the work done does not depend on the threads.
+  std::vector<WorkItem> items;
+  for (const WorkItem& item : level)
+    for (int s = item.s0; s < item.s1; ++s) items.push_back({item.pair, item.node_a, item.node_b, s, s + 1});
+  std::sort(items.begin(), items.end(), [](const WorkItem& x, const WorkItem& y) {
+    return std::tie(x.pair, x.s0, x.node_a, x.node_b) < std::tie(y.pair, y.s0, y.node_a, y.node_b);
+  });
+  std::vector<std::pair<std::size_t, std::size_t>> steps;  // runs of items of one step
+  for (std::size_t i = 0; i < items.size(); ++i)
+    if (i == 0 || items[i].pair != items[i - 1].pair || items[i].s0 != items[i - 1].s0) steps.push_back({i, i + 1});
+    else steps.back().second = i + 1;
+  for (std::size_t first = 0; first < steps.size(); first += kStepsPerBatch) {
+    const std::size_t end = std::min(steps.size(), first + kStepsPerBatch);
+    std::vector<std::vector<LineContact>> batch_contacts(end - first);
+    std::vector<DetectionStats> batch_stats(end - first);
+    tbb::parallel_for(first, end, [&](std::size_t g) {
+      const auto [first_frame, last_frame] = item_frames(tr, items[steps[g].first]);
+      if (first_frame > last_frame) return;  // the step lies outside the frames to detect
+      std::vector<detail::FrameContacts> frames(last_frame - first_frame + 1, detail::FrameContacts(tr.gap(items[steps[g].first].pair)));
+      std::vector<LineContact>& local = batch_contacts[g - first];
+      const ItemContext context{{nullptr, &frames, first_frame}, local, batch_stats[g - first]};
+      // Depth first from `stack` until it is empty, or (probing) until a contact is found.
+      std::vector<WorkItem> children;
+      const auto descend = [&](std::vector<WorkItem>& stack, bool probe) {
+        while (!stack.empty()) {
+          const WorkItem item = stack.back();
+          stack.pop_back();
+          const std::size_t known = local.size();
+          process(tr, item, children, context);
+          for (std::size_t c = known; c < local.size(); ++c)
+            frames[frame_of_contact(tr.grid, local[c].contact) - first_frame].add(local[c].contact);
+          stack.insert(stack.end(), children.rbegin(), children.rend());
+          children.clear();
+          if (probe && local.size() > known) return;
+        }
+      };
+      // First a probe from each of the step's items, to find contacts all over the region
+      // (so the groups' boxes are nearly whole early), then the rest.
+      std::vector<WorkItem> rest;
+      for (std::size_t i = steps[g].first; i < steps[g].second; ++i) {
+        std::vector<WorkItem> stack = {items[i]};
+        descend(stack, true);
+        rest.insert(rest.end(), stack.rbegin(), stack.rend());
+      }
+      std::reverse(rest.begin(), rest.end());
+      descend(rest, false);
+    });
+    for (std::size_t g = first; g < end; ++g) {
+      for (const LineContact& c : batch_contacts[g - first]) {
+        found[c.line][frame_of_contact(tr.grid, c.contact) - tr.lines[c.line].first_frame].add(c.contact);
+        contacts.push_back(c.contact);
+      }
+      add_stats(stats, batch_stats[g - first]);
+    }
+    if (callbacks.preview) {
+      std::vector<std::pair<double, double>> ranges = found_ranges();
+      for (std::size_t g = end; g < steps.size(); ++g) {
+        const WorkItem& item = items[steps[g].first];
+        ranges.push_back({tr.lines[item.pair].times[item.s0], tr.lines[item.pair].times[item.s1]});
+      }
+      callbacks.preview({depth, union_of(std::move(ranges))});
+    }
+    if (!report_progress(callbacks.progress, 0.5 + 0.5 * static_cast<double>(end) / steps.size())) return false;
+  }
+  std::sort(contacts.begin(), contacts.end(), contact_less);
+  return true;
 }
 
 /// The posed (proxy) vertices of a part at time t.
@@ -455,11 +721,13 @@ bool SpacetimeDetector::detect(const scene::Reconfigurable& scene, const BodyTre
   tbb::parallel_for(0, n, [&](int p) {
     proxies_[p] = build_part_proxy(scene, transition_, p, options_.tolerance, options_.min_step);
   });
+  groups_.clear();
   contacts_.clear();
   containments_.clear();
+  const int frames = FrameGrid(options_.frame).count();
   std::vector<PairRange> work;
   for (int a = 0; a < n; ++a)
-    for (int b = a + 1; b < n; ++b) work.push_back({a, b, 0.0, 1.0});
+    for (int b = a + 1; b < n; ++b) work.push_back({a, b, 0, frames - 1});
   if (!traverse(scene, trees, work, callbacks)) return false;
   valid_ = true;
   return true;
@@ -489,17 +757,32 @@ bool SpacetimeDetector::update(const scene::Reconfigurable& scene, const BodyTre
     for (const auto& range : ranges)
       for (int q = 0; q < n; ++q)
         if (q != part) pair_ranges[{std::min(part, q), std::max(part, q)}].push_back(range);
+  // Re-traverse whole frames: a frame's groups are rebuilt from scratch or kept as they are.
+  const FrameGrid grid(options_.frame);
   std::vector<PairRange> work;
   std::set<std::pair<int, int>> pairs;
   for (auto& [pair, ranges] : pair_ranges) {
     pairs.insert(pair);
-    for (const auto& [t0, t1] : union_of(ranges)) work.push_back({pair.first, pair.second, t0, t1});
+    std::vector<std::pair<int, int>> frames;  // the frames holding the changed ranges, merged when they touch
+    for (const auto& [t0, t1] : ranges) frames.push_back({grid.frame_of(t0), grid.frame_of(t1)});
+    std::sort(frames.begin(), frames.end());
+    for (const auto& [first, last] : frames)
+      if (!work.empty() && work.back().a == pair.first && work.back().b == pair.second && first <= work.back().last_frame + 1)
+        work.back().last_frame = std::max(work.back().last_frame, last);
+      else
+        work.push_back({pair.first, pair.second, first, last});
   }
-  // Drop what the re-traversal will find again: contacts found in a re-traversed step.
-  std::erase_if(contacts_, [&](const TriangleContact& c) {
+  // Drop what the re-traversal finds again: the groups and contacts of its frames.
+  const auto retraversed = [&](int a, int b, int frame) {
     return std::any_of(work.begin(), work.end(), [&](const PairRange& w) {
-      return w.a == c.part_a && w.b == c.part_b && c.step_t0 >= w.t0 && c.step_t1 <= w.t1;
+      return w.a == a && w.b == b && frame >= w.first_frame && frame <= w.last_frame;
     });
+  };
+  std::erase_if(groups_, [&](const CollisionInterval& g) {
+    return retraversed(g.parts[0], g.parts[1], grid.frame_of((g.t0 + g.t1) / 2));
+  });
+  std::erase_if(contacts_, [&](const TriangleContact& c) {
+    return retraversed(c.part_a, c.part_b, grid.frame_of((c.t0 + c.t1) / 2));
   });
   std::erase_if(containments_, [&](const Containment& c) {
     return pairs.count({std::min(c.inner, c.outer), std::max(c.inner, c.outer)}) > 0;
@@ -509,14 +792,16 @@ bool SpacetimeDetector::update(const scene::Reconfigurable& scene, const BodyTre
 
 bool SpacetimeDetector::traverse(const scene::Reconfigurable& scene, const BodyTrees& trees,
                                  const std::vector<PairRange>& work, const DetectCallbacks& callbacks) {
+  const FrameGrid grid(options_.frame);
   std::vector<PairTimeline> lines;
-  for (const PairRange& w : work) lines.push_back(make_timeline(proxies_, w.a, w.b, w.t0, w.t1));
+  for (const PairRange& w : work) lines.push_back(make_timeline(proxies_, grid, w.a, w.b, w.first_frame, w.last_frame));
   for (const PartProxy& proxy : proxies_) stats_.proxy_samples += static_cast<long>(proxy.times.size());
-  std::vector<TriangleContact> found;
+  FoundFrames found;
+  std::vector<TriangleContact> contacts;
   bool finished = false;
   const auto run = [&]<DopFamily family>() {
     const Traversal<family> traversal(scene, trees, proxies_, options_, std::move(lines));
-    finished = run_traversal(traversal, found, stats_, callbacks);
+    finished = run_traversal(traversal, found, contacts, stats_, callbacks);
   };
   switch (options_.dop) {
     case DopFamily::k8: run.template operator()<DopFamily::k8>(); break;
@@ -527,7 +812,12 @@ bool SpacetimeDetector::traverse(const scene::Reconfigurable& scene, const BodyT
     valid_ = false;
     return false;
   }
-  contacts_.insert(contacts_.end(), found.begin(), found.end());
+  for (const auto& frames : found)
+    for (const detail::FrameContacts& frame : frames) groups_.insert(groups_.end(), frame.groups().begin(), frame.groups().end());
+  std::sort(groups_.begin(), groups_.end(), [](const CollisionInterval& x, const CollisionInterval& y) {
+    return std::tie(x.t0, x.parts, x.t1) < std::tie(y.t0, y.parts, y.t1);
+  });
+  contacts_.insert(contacts_.end(), contacts.begin(), contacts.end());
   std::sort(contacts_.begin(), contacts_.end(), contact_less);
 
   if (options_.detect_containment) {
@@ -536,8 +826,8 @@ bool SpacetimeDetector::traverse(const scene::Reconfigurable& scene, const BodyT
     for (const PairRange& w : work) pairs.insert({w.a, w.b});
     for (const auto& [a, b] : pairs) {
       std::vector<std::pair<double, double>> touching;
-      for (const TriangleContact& c : contacts_)
-        if (c.part_a == a && c.part_b == b && !c.possible) touching.push_back({c.t0, c.t1});
+      for (const CollisionInterval& g : groups_)
+        if (g.parts[0] == a && g.parts[1] == b && !g.possible) touching.push_back({g.t0, g.t1});
       touching = union_of(std::move(touching));
       std::vector<std::pair<double, double>> free;
       double start = 0;

@@ -23,14 +23,31 @@ scene::Reconfigurable random_scene(std::uint32_t seed) {
 
 struct Detected {
   std::vector<TriangleContact> contacts;
+  std::vector<CollisionInterval> groups;
   std::vector<Containment> containments;
   std::vector<CollisionInterval> intervals;
+  DetectionStats stats;
 };
 
 Detected detect(const scene::Reconfigurable& scene, DetectorOptions options) {
   SpacetimeDetector detector(0, options);
   EXPECT_TRUE(detector.detect(scene, build_body_trees(scene)));
-  return {detector.contacts(), detector.containments(), consolidate(detector.contacts(), detector.containments())};
+  return {detector.contacts(), detector.groups(), detector.containments(),
+          consolidate(detector.groups(), detector.containments()), detector.last_stats()};
+}
+
+/// Whether two lists of groups say exactly the same: when, where, which parts.
+::testing::AssertionResult same_groups(const std::vector<CollisionInterval>& x, const std::vector<CollisionInterval>& y) {
+  if (x.size() != y.size()) return ::testing::AssertionFailure() << x.size() << " groups against " << y.size();
+  for (std::size_t i = 0; i < x.size(); ++i)
+    if (x[i].t0 != y[i].t0 || x[i].t1 != y[i].t1 || x[i].parts != y[i].parts || x[i].possible != y[i].possible ||
+        x[i].box.min() != y[i].box.min() || x[i].box.max() != y[i].box.max())
+      return ::testing::AssertionFailure() << "group " << i << ": [" << x[i].t0 << ", " << x[i].t1 << "] "
+                                           << x[i].box.min().transpose() << " / " << x[i].box.max().transpose()
+                                           << (x[i].possible ? " possible" : "") << " against [" << y[i].t0 << ", "
+                                           << y[i].t1 << "] " << y[i].box.min().transpose() << " / "
+                                           << y[i].box.max().transpose() << (y[i].possible ? " possible" : "");
+  return ::testing::AssertionSuccess();
 }
 
 /// Whether some interval of `intervals` for parts {a, b} covers time t (with slack).
@@ -98,16 +115,22 @@ TEST(SpacetimeDetector, ExactModeAgreesWithTheReferenceUpToTheProxyTolerance) {
   }
 }
 
-/// The three axis families bound differently but must find exactly the same contacts.
+/// The three axis families bound differently but must find exactly the same contacts (all of
+/// them), and the same groups when the search stops early.
 TEST(SpacetimeDetector, DopFamiliesFindTheSameContacts) {
   for (std::uint32_t seed = 40; seed < 44; ++seed) {
     const scene::Reconfigurable scene = random_scene(seed);
     std::vector<std::vector<TriangleContact>> results;
+    std::vector<std::vector<CollisionInterval>> groups;
     for (DopFamily family : {DopFamily::k8, DopFamily::k28, DopFamily::k80}) {
       DetectorOptions options;
       options.dop = family;
+      groups.push_back(detect(scene, options).groups);
+      options.all_contacts = true;
       results.push_back(detect(scene, options).contacts);
     }
+    EXPECT_TRUE(same_groups(groups[0], groups[1])) << seed;
+    EXPECT_TRUE(same_groups(groups[0], groups[2])) << seed;
     ASSERT_EQ(results[0].size(), results[1].size()) << seed;
     ASSERT_EQ(results[0].size(), results[2].size()) << seed;
     for (std::size_t i = 0; i < results[0].size(); ++i)
@@ -120,17 +143,9 @@ TEST(SpacetimeDetector, DopFamiliesFindTheSameContacts) {
   }
 }
 
-bool same_contacts(const std::vector<TriangleContact>& x, const std::vector<TriangleContact>& y) {
-  if (x.size() != y.size()) return false;
-  for (std::size_t i = 0; i < x.size(); ++i)
-    if (x[i].part_a != y[i].part_a || x[i].part_b != y[i].part_b || x[i].triangle_a != y[i].triangle_a ||
-        x[i].triangle_b != y[i].triangle_b || x[i].t0 != y[i].t0 || x[i].t1 != y[i].t1)
-      return false;
-  return true;
-}
 
-/// After edits (and after undoing them), the incremental update gives exactly the contacts of
-/// a detection from scratch.
+/// After edits (and after undoing them), the incremental update gives exactly the groups of a
+/// detection from scratch.
 TEST(SpacetimeDetector, IncrementalUpdateEqualsDetectionFromScratch) {
   std::mt19937 random(5);
   for (std::uint32_t seed = 60; seed < 66; ++seed) {
@@ -158,14 +173,14 @@ TEST(SpacetimeDetector, IncrementalUpdateEqualsDetectionFromScratch) {
 
       SpacetimeDetector fresh(0, {});
       ASSERT_TRUE(fresh.detect(scene, trees));
-      EXPECT_TRUE(same_contacts(incremental.contacts(), fresh.contacts())) << "seed " << seed << " step " << step;
+      EXPECT_TRUE(same_groups(incremental.groups(), fresh.groups())) << "seed " << seed << " step " << step;
       EXPECT_EQ(incremental.containments().size(), fresh.containments().size());
       // And undoing brings back exactly the original proxies' answer for that range.
       if (step == 3) {
         while (history.can_undo()) ASSERT_TRUE(incremental.update(scene, trees, history.undo(scene)));
         SpacetimeDetector original(0, {});
         ASSERT_TRUE(original.detect(scene, trees));
-        EXPECT_TRUE(same_contacts(incremental.contacts(), original.contacts()));
+        EXPECT_TRUE(same_groups(incremental.groups(), original.groups()));
       }
     }
   }
@@ -181,7 +196,9 @@ TEST(SpacetimeDetector, TraversalLosesNoContactOfTheNarrowPhase) {
     scene_options.parts = 3;
     scene_options.spread = 0.6;
     const scene::Reconfigurable scene = testing::random_scene(seed, scene_options);
-    SpacetimeDetector detector(0, {});
+    DetectorOptions options;
+    options.all_contacts = true;
+    SpacetimeDetector detector(0, options);
     ASSERT_TRUE(detector.detect(scene, build_body_trees(scene)));
     const auto& proxies = detector.proxies();
     const auto posed = [&](int part, int triangle, double t) {
@@ -229,6 +246,35 @@ TEST(SpacetimeDetector, TraversalLosesNoContactOfTheNarrowPhase) {
       }
   }
   EXPECT_GT(checked, 100);
+}
+
+/// Stopping early loses nothing: the groups (time extents, boxes, parts, `possible`) are
+/// exactly those built from every contact, in exact and conservative mode, on scenes from
+/// grazing to deep overlaps; and stopping early does skip work.
+TEST(SpacetimeDetector, StoppingEarlyGivesTheGroupsOfAllContacts) {
+  long pruned = 0, contacts = 0, all = 0;
+  for (std::uint32_t seed = 100; seed < 112; ++seed)
+    for (const bool conservative : {false, true}) {
+      testing::RandomSceneOptions scene_options;
+      scene_options.spread = seed % 3 == 0 ? 0.3 : 0.8;  // some scenes overlap deeply all the time
+      scene_options.sphere_subdivisions = seed % 2 == 0 ? 2 : 1;
+      const scene::Reconfigurable scene = testing::random_scene(seed, scene_options);
+      DetectorOptions options;
+      options.conservative = conservative;
+      options.frame = seed % 4 == 1 ? 0.05 : 0.01;
+      options.breadth_first_items = seed % 2 == 0 ? 8 : 8192;  // depth first early, or mostly breadth first
+      const Detected early = detect(scene, options);
+      options.all_contacts = true;
+      const Detected every = detect(scene, options);
+      EXPECT_TRUE(same_groups(early.groups, every.groups)) << "seed " << seed << " conservative " << conservative;
+      EXPECT_LE(early.contacts.size(), every.contacts.size());
+      EXPECT_EQ(every.stats.pruned, 0);
+      pruned += early.stats.pruned;
+      contacts += static_cast<long>(early.contacts.size());
+      all += static_cast<long>(every.contacts.size());
+    }
+  EXPECT_GT(pruned, 0);
+  EXPECT_LT(contacts, all / 2) << "stopping early should find far fewer contacts";
 }
 
 TEST(SpacetimeDetector, ProxiesStayWithinTolerance) {

@@ -44,7 +44,6 @@ struct CollisionSnapshot {
 
 struct CollisionServiceOptions {
   DetectorOptions detector;
-  double frame = 0.01;  ///< time span of one 3D-view interval
   /// Threads detection may use (0: all cores). An editor leaves a core to its UI and renderer.
   int max_threads = 0;
   /// Run the worker at a lower scheduling priority (Linux nice +10), so that when the UI

@@ -12,14 +12,24 @@
 
 namespace reconfig::collision {
 
-/// Merges overlapping contacts and containments into collision intervals.
+/// Merges intervals (the detector's groups of contacts per frame) and containments: any two
+/// that meet in time and space merge, until none do (without a duration limit the result
+/// does not depend on the order in which they merge).
 /// @param max_duration  a merged interval never spans more time than this (default: no limit,
 ///                      the maximal consolidation the timeline shows; the 3D view uses one
 ///                      frame so its boxes stay tight). A single contact longer than the limit
 ///                      stays whole.
 /// @return intervals sorted by (t0, parts)
+std::vector<CollisionInterval> consolidate(std::vector<CollisionInterval> intervals,
+                                           const std::vector<Containment>& containments,
+                                           double max_duration = std::numeric_limits<double>::infinity());
+
+/// The same from raw contacts, each first made an interval of its two parts.
 std::vector<CollisionInterval> consolidate(const std::vector<TriangleContact>& contacts,
                                            const std::vector<Containment>& containments,
                                            double max_duration = std::numeric_limits<double>::infinity());
+
+/// One contact as an interval of its two parts and its triangle pair.
+CollisionInterval contact_interval(const TriangleContact& contact);
 
 }  // namespace reconfig::collision

@@ -14,8 +14,6 @@ struct CollisionRequest {
   DetectorOptions detector;
   /// Transitions to check (indices); empty means all.
   std::vector<int> transitions;
-  /// Longest time span of one interval in `frames` (the 3D view's consolidation).
-  double frame = 0.01;
   ProgressCallback progress;  ///< fraction over all transitions; false cancels
 };
 

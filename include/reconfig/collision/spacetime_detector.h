@@ -5,11 +5,13 @@
 /// extents of possible collisions are known level by level), with an exact narrow phase at
 /// the leaves, and local refitting after edits (reconfigurables §5).
 
+#include <cstddef>
 #include <functional>
 #include <memory>
 #include <vector>
 
 #include "reconfig/collision/body_tree.h"
+#include "reconfig/collision/collision_interval.h"
 #include "reconfig/collision/kdop.h"
 #include "reconfig/collision/spacetime_proxy.h"
 #include "reconfig/collision/triangle_contact.h"
@@ -30,9 +32,22 @@ struct DetectorOptions {
   /// Also report parts nested inside others without surface contact.
   bool detect_containment = true;
   double min_step = 1e-5;  ///< smallest proxy time step
-  /// Contacts longer than this are reported in pieces, each with its own (tighter) box, so
-  /// that consolidation per frame can keep the 3D view's boxes tight.
-  double max_contact_duration = 0.01;
+  /// Length of a frame (`FrameGrid`): contacts are clipped to frames and merged into groups
+  /// per pair of parts and frame, so every group spans one frame at most and the 3D view's
+  /// boxes stay tight.
+  double frame = 0.01;
+  /// Find every intersecting triangle pair (all of a deep overlap's hundreds of thousands).
+  /// Off, the traversal skips any work whose contacts could only fall inside a group the
+  /// frame already has (its time and box): the groups — when, where, which parts — come out
+  /// the same, and each group's triangle list holds the contacts that made it (witnesses).
+  bool all_contacts = false;
+  /// Contacts of a pair of parts in one frame whose boxes come closer than this fraction of
+  /// the smaller part's size (its box diagonal) form one group.
+  double group_gap = 0.2;
+  /// The traversal goes breadth first (a preview per level) while a level holds fewer work
+  /// items than this, then depth first one proxy step at a time, so that the contacts a step
+  /// finds prune the rest of it at once.
+  std::size_t breadth_first_items = 8192;
 };
 
 /// The coarse picture after one level of the breadth-first traversal: every time where a
@@ -48,6 +63,7 @@ struct DetectionStats {
   long narrow_pieces = 0;   ///< time pieces the narrow phase examined
   long contact_tests = 0;   ///< vertex–face and edge–edge tests the narrow phase ran
   long containment_tests = 0;
+  long pruned = 0;          ///< work skipped because a frame's groups already covered it
   int levels = 0;           ///< breadth-first levels processed
   long proxy_samples = 0;   ///< time samples over all parts' proxies
 };
@@ -85,7 +101,11 @@ class SpacetimeDetector {
   int transition() const { return transition_; }
   const DetectorOptions& options() const { return options_; }
   bool valid() const { return valid_; }
-  /// Every triangle contact, sorted by (t0, parts, triangles).
+  /// Per pair of parts and frame, the contacts merged into groups (the detection's result),
+  /// sorted by (t0, parts, t1). Each group's `parts` are its two parts.
+  const std::vector<CollisionInterval>& groups() const { return groups_; }
+  /// The triangle contacts found, clipped to frames, sorted by (t0, parts, triangles): every
+  /// one with `all_contacts`, else the witnesses the groups are made of.
   const std::vector<TriangleContact>& contacts() const { return contacts_; }
   const std::vector<Containment>& containments() const { return containments_; }
   const std::vector<PartProxy>& proxies() const { return proxies_; }
@@ -93,8 +113,8 @@ class SpacetimeDetector {
 
  private:
   struct PairRange {
-    int a, b;       ///< parts, a < b
-    double t0, t1;  ///< time range to traverse
+    int a, b;                     ///< parts, a < b
+    int first_frame, last_frame;  ///< the frames to traverse
   };
   bool traverse(const scene::Reconfigurable& scene, const BodyTrees& trees, const std::vector<PairRange>& work,
                 const DetectCallbacks& callbacks);
@@ -103,6 +123,7 @@ class SpacetimeDetector {
   DetectorOptions options_;
   bool valid_ = false;
   std::vector<PartProxy> proxies_;
+  std::vector<CollisionInterval> groups_;
   std::vector<TriangleContact> contacts_;
   std::vector<Containment> containments_;
   DetectionStats stats_;

@@ -1,0 +1,37 @@
+#pragma once
+/// @file
+/// What the detector has found of one pair of parts in one frame: its contacts merged into
+/// groups (any two that meet in time and space merge, to a fixpoint, which does not depend on
+/// the order contacts arrive in), and the test that lets the traversal skip work whose every
+/// possible contact would fall inside a group already.
+
+#include <vector>
+
+#include "reconfig/collision/collision_interval.h"
+#include "reconfig/collision/triangle_contact.h"
+
+namespace reconfig::collision::detail {
+
+class FrameContacts {
+ public:
+  /// @param gap  boxes closer than this (on every axis) count as meeting
+  explicit FrameContacts(double gap = 0) : gap_(gap) {}
+
+  /// Merges a contact of this pair of parts within this frame.
+  void add(const TriangleContact& contact);
+
+  /// Whether some confirmed (not `possible`) group contains both the time range [t0, t1] and
+  /// the box: then any contact within them merges into that group and changes nothing.
+  bool covers(double t0, double t1, const Eigen::AlignedBox3d& box) const;
+
+  /// Whether some confirmed group's time extent contains [t0, t1] (`covers` without the box).
+  bool covers_time(double t0, double t1) const;
+
+  const std::vector<CollisionInterval>& groups() const { return groups_; }
+
+ private:
+  double gap_;
+  std::vector<CollisionInterval> groups_;
+};
+
+}  // namespace reconfig::collision::detail
