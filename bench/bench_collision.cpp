@@ -136,30 +136,39 @@ void BM_FullDetection(benchmark::State& state) {
   collision::DetectorOptions options;
   options.tolerance = 1e-3;
   options.dop = family(static_cast<int>(state.range(1)));
-  long contacts = 0, samples = 0, bound_tests = 0, narrow = 0;
+  options.all_contacts = state.range(2) != 0;
+  long contacts = 0, groups = 0, samples = 0, bound_tests = 0, narrow = 0;
   for (auto _ : state) {
     collision::SpacetimeDetector detector(f.transition, options);
     detector.detect(f.scene, f.trees);
     contacts = static_cast<long>(detector.contacts().size());
+    groups = static_cast<long>(detector.groups().size());
     samples = detector.last_stats().proxy_samples;
     bound_tests = detector.last_stats().bound_tests;
     narrow = detector.last_stats().narrow_phase;
   }
   describe(state, f);
   state.counters["contacts"] = static_cast<double>(contacts);
+  state.counters["groups"] = static_cast<double>(groups);
   state.counters["proxy_samples"] = static_cast<double>(samples);  // summed over the parts
   state.counters["bound_tests"] = static_cast<double>(bound_tests);
   state.counters["narrow_phase"] = static_cast<double>(narrow);
 }
-// Scenes 0–4 with every DOP family; the 1 M-triangle gallery (minutes per run) with 28 only.
+// Scenes 0–4 with every DOP family, stopping early (all:0) or finding every contact (all:1,
+// 28-DOP); the 1 M-triangle gallery with 28 only.
 BENCHMARK(BM_FullDetection)
-    ->ArgsProduct({{kElephant, kBunnyArmadillo, kEight, kKitchenHasty, kKitchen}, {28, 8, 80}})
-    ->ArgNames({"scene", "dop"})
+    ->ArgsProduct({{kElephant, kBunnyArmadillo, kEight, kKitchenHasty, kKitchen}, {28, 8, 80}, {0}})
+    ->ArgNames({"scene", "dop", "all"})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 BENCHMARK(BM_FullDetection)
-    ->Args({kGallery, 28})
-    ->ArgNames({"scene", "dop"})
+    ->ArgsProduct({{kElephant, kBunnyArmadillo, kEight, kKitchenHasty, kKitchen}, {28}, {1}})
+    ->ArgNames({"scene", "dop", "all"})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(BM_FullDetection)
+    ->Args({kGallery, 28, 0})
+    ->ArgNames({"scene", "dop", "all"})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->Iterations(1);
@@ -221,7 +230,7 @@ BENCHMARK(BM_ReferenceCheck)->Arg(kGallery)->ArgName("scene")->Unit(benchmark::k
 /// FCL 0.7's own BVHs (BVHModel<OBBRSS>, built once per part) and the engine's result, per scene.
 struct FclModels {
   std::vector<std::shared_ptr<fcl::CollisionGeometryd>> geometry;
-  std::vector<collision::TriangleContact> engine_contacts;  ///< 28-DOP, 1 mm: for the miss count
+  std::vector<collision::CollisionInterval> engine_groups;  ///< 28-DOP, 1 mm: for the miss count
 };
 
 const FclModels& fcl_models(int which) {
@@ -246,7 +255,7 @@ const FclModels& fcl_models(int which) {
   }
   collision::SpacetimeDetector detector(f.transition, {});
   detector.detect(f.scene, f.trees);
-  models.engine_contacts = detector.contacts();
+  models.engine_groups = detector.groups();
   return cache.emplace(which, std::move(models)).first->second;
 }
 
@@ -314,8 +323,8 @@ void fcl_per_step(benchmark::State& state, bool all_contacts) {
     for (const auto& [a, b] : hits[s].pairs) {
       ++pair_hits;
       const double t = f.sample_times[s];
-      const bool covered = std::any_of(models.engine_contacts.begin(), models.engine_contacts.end(), [&](const auto& c) {
-        return c.part_a == a && c.part_b == b && c.t0 <= t + 1e-9 && t - 1e-9 <= c.t1;
+      const bool covered = std::any_of(models.engine_groups.begin(), models.engine_groups.end(), [&](const auto& g) {
+        return g.parts[0] == a && g.parts[1] == b && g.t0 <= t + 1e-9 && t - 1e-9 <= g.t1;
       });
       missed += covered ? 0 : 1;
     }

@@ -37,16 +37,16 @@ def main(path):
     load = context.get("load_avg") or [None]
     print(f"<!-- {context.get('date', '')}, {context.get('num_cpus', '?')} CPUs, "
           f"load average {'?' if load[0] is None else f'{load[0]:.2f}'} at the start -->")
-    print("| # | scene | triangles | parts | samples | engine 28-DOP | 8-DOP | 80-DOP | update after one key edit "
+    print("| # | scene | triangles | parts | samples | engine 28-DOP | 8-DOP | 80-DOP | every contact | update after one key edit "
           "| reference | FCL 0.7 | FCL 0.7, all contacts | engine / reference | engine / FCL | engine / FCL all contacts "
           "| FCL colliding samples (missed by engine) |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     for row in report["summary"]:
         fcl_hits = row.get("fcl_colliding_samples")
         hits = "—" if fcl_hits is None else f"{fcl_hits:.0f} ({row.get('fcl_missed_by_engine', 0):.0f})"
         print(f"| {row['scene']} | {row['label']} | {fmt_count(row['triangles'])} | {row['parts']:.0f} "
               f"| {row['samples']:.0f} | {fmt_time(row['engine_ns'])} | {fmt_time(row['dop8_ns'])} "
-              f"| {fmt_time(row['dop80_ns'])} | {fmt_time(row['update_ns'])} | {fmt_time(row['reference_ns'])} "
+              f"| {fmt_time(row['dop80_ns'])} | {fmt_time(row.get('all_contacts_ns'))} | {fmt_time(row['update_ns'])} | {fmt_time(row['reference_ns'])} "
               f"| {fmt_time(row['fcl_ns'])} | {fmt_time(row.get('fcl_all_contacts_ns'))} "
               f"| {fmt_ratio(row['engine_vs_reference'])} | {fmt_ratio(row['engine_vs_fcl'])} "
               f"| {fmt_ratio(row.get('engine_vs_fcl_all_contacts'))} | {hits} |")
@@ -61,18 +61,21 @@ def dop_work(report):
         if parts[0] != "BM_FullDetection":
             continue
         fields = dict(p.split(":", 1) for p in parts[1:] if ":" in p)
-        work.setdefault(fields["scene"], {})[fields.get("dop", "28")] = (b.get("bound_tests"), b.get("narrow_phase"),
-                                                                          b.get("contacts"))
+        which = "all" if fields.get("all") == "1" else fields.get("dop", "28")
+        work.setdefault(fields["scene"], {})[which] = (b.get("bound_tests"), b.get("narrow_phase"), b.get("contacts"))
     print()
-    print("| # | 28-DOP: bound tests / narrow-phase tests | 8-DOP | 80-DOP | contacts |")
-    print("|---|---|---|---|---|")
+    print("| # | 28-DOP: bound tests / narrow-phase tests | 8-DOP | 80-DOP | 28-DOP, every contact | contacts found "
+          "(every contact) |")
+    print("|---|---|---|---|---|---|")
     for scene, by_dop in work.items():
         cells = []
-        for dop in ("28", "8", "80"):
+        for dop in ("28", "8", "80", "all"):
             w = by_dop.get(dop)
             cells.append("—" if w is None else f"{w[0]:,.0f} / {w[1]:,.0f}")
-        contacts = by_dop.get("28", (None, None, None))[2]
-        print(f"| {scene} | {' | '.join(cells)} | {'—' if contacts is None else f'{contacts:,.0f}'} |")
+        found = by_dop.get("28", (None, None, None))[2]
+        every = by_dop.get("all", (None, None, None))[2]
+        count = "—" if found is None else f"{found:,.0f}" + ("" if every is None else f" ({every:,.0f})")
+        print(f"| {scene} | {' | '.join(cells)} | {count} |")
 
 
 if __name__ == "__main__":

@@ -54,15 +54,16 @@ fs::path own_folder() {
 /// The part of a benchmark name after its family ("/3", "/scene:0/dop:28" → "/scene:0").
 std::string suffix_of(const std::string& name, const std::string& family) { return name.substr(family.size()); }
 
-/// What a subject and its baseline have in common: the suffix without the DOP family and
-/// without Google Benchmark's run options ("/scene:0/dop:28/real_time" → "/scene:0").
+/// What a subject and its baseline have in common: the suffix without the DOP family, the
+/// every-contact switch and Google Benchmark's run options ("/scene:0/dop:28/all:0/real_time"
+/// → "/scene:0").
 std::string comparison_key(const std::string& suffix) {
   std::string key, segment;
   std::istringstream in(suffix);
   while (std::getline(in, segment, '/')) {
     if (segment.empty()) continue;
     bool option = false;
-    for (const char* prefix : {"dop:", "real_time", "process_time", "iterations:", "min_time:", "repeats:", "threads:"})
+    for (const char* prefix : {"dop:", "all:", "real_time", "process_time", "iterations:", "min_time:", "repeats:", "threads:"})
       option = option || segment.rfind(prefix, 0) == 0;
     if (!option) key += "/" + segment;
   }
@@ -102,7 +103,7 @@ nlohmann::ordered_json collision_summary(const nlohmann::json& benchmarks) {
       row["label"] = b.value("label", "");
       for (const char* counter : {"triangles", "parts", "samples"}) row[counter] = b.value(counter, 0.0);
       for (const char* column :
-           {"engine_ns", "dop8_ns", "dop80_ns", "update_ns", "reference_ns", "fcl_ns", "fcl_all_contacts_ns"})
+           {"engine_ns", "dop8_ns", "dop80_ns", "all_contacts_ns", "update_ns", "reference_ns", "fcl_ns", "fcl_all_contacts_ns"})
         row[column] = nullptr;
       rows[key] = row;
     }
@@ -119,7 +120,7 @@ nlohmann::ordered_json collision_summary(const nlohmann::json& benchmarks) {
     if (family == "BM_FullDetection") {
       const auto dop = suffix.find("/dop:");
       const std::string k = dop == std::string::npos ? "28" : suffix.substr(dop + 5, suffix.find('/', dop + 1) - dop - 5);
-      column = k == "28" ? "engine_ns" : "dop" + k + "_ns";
+      column = suffix.find("/all:1") != std::string::npos ? "all_contacts_ns" : k == "28" ? "engine_ns" : "dop" + k + "_ns";
     } else if (family == "BM_UpdateAfterKeyEdit") {
       column = "update_ns";
     } else if (family == "BM_ReferenceCheck") {

@@ -25,6 +25,7 @@ struct CheckOptions {
   double tolerance = 1e-3;
   int dop = 28;
   bool conservative = false;
+  bool all_contacts = false;
   int threads = 0;
   int samples = 1000;
   std::vector<std::string> transitions;
@@ -152,16 +153,18 @@ CheckOutcome run_engine(const scene::Reconfigurable& scene, const CheckOptions& 
   request.detector.tolerance = options.tolerance;
   request.detector.dop = dop_family(options.dop);
   request.detector.conservative = options.conservative;
+  request.detector.all_contacts = options.all_contacts;
   request.transitions = transitions;
   request.progress = progress;
   const collision::CollisionResult result = collision::detect_collisions(scene, request);
   return {result.transitions,
-          fmt::format("spacetime engine, {}-DOP, tolerance {:g}{}", options.dop, options.tolerance,
-                      options.conservative ? ", conservative" : ""),
+          fmt::format("spacetime engine, {}-DOP, tolerance {:g}{}{}", options.dop, options.tolerance,
+                      options.conservative ? ", conservative" : "", options.all_contacts ? ", every contact" : ""),
           {{"method", "engine"},
            {"dop", options.dop},
            {"tolerance", options.tolerance},
            {"conservative", options.conservative},
+           {"all_contacts", options.all_contacts},
            {"proxy_samples", result.stats.proxy_samples},
            {"narrow_phase_tests", result.stats.narrow_phase}},
           0};
@@ -209,6 +212,9 @@ void add_check_command(CLI::App& app, int& exit_code) {
       ->capture_default_str();
   command->add_flag("--conservative", options->conservative,
                     "Engine: also report near misses the true motion may turn into collisions (never misses one)");
+  command->add_flag("--all-contacts", options->all_contacts,
+                    "Engine: find every intersecting triangle pair instead of stopping once the intervals are known "
+                    "(same intervals, slower on deep overlaps)");
   command->add_option("--threads", options->threads, "Worker threads (default: all cores)")->check(CLI::NonNegativeNumber);
   command->add_option("--samples", options->samples, "Time samples per transition (reference check)")
       ->check(CLI::Range(2, 10000000))

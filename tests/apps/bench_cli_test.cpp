@@ -51,11 +51,12 @@ TEST_F(BenchCli, CollisionSuiteSummarizesEachSceneWithTheBaselineRatios) {
   EXPECT_EQ(row["scene"], "4");
   EXPECT_GE(row["parts"].get<double>(), 20.0);
   EXPECT_GT(row["samples"].get<double>(), 2.0);
-  for (const char* column : {"engine_ns", "dop8_ns", "dop80_ns", "update_ns", "reference_ns"})
+  for (const char* column : {"engine_ns", "dop8_ns", "dop80_ns", "all_contacts_ns", "update_ns", "reference_ns"})
     EXPECT_GT(row[column].get<double>(), 0.0) << column;
   EXPECT_GT(row["engine_vs_reference"].get<double>(), 0.0);
-  // Engine vs reference for each of the three DOP families, and vs FCL when it was found.
-  EXPECT_EQ(report["ratios"].size(), fcl ? 6u : 3u);
+  // Engine vs reference for each of the three DOP families and for every contact, and vs FCL
+  // when it was found.
+  EXPECT_EQ(report["ratios"].size(), fcl ? 8u : 4u);
   if (fcl) {
     EXPECT_GT(row["engine_vs_fcl"].get<double>(), 0.0);
     EXPECT_EQ(row["fcl_colliding_samples"].get<double>(), 0.0);  // collision-free
