@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <set>
 
@@ -20,6 +21,12 @@ namespace reconfig::collision {
 namespace {
 
 using MovingTriangle = std::array<Eigen::Vector3d, 3>;
+
+/// How far apart two contacts of a pair of parts in one frame may lie and still be grouped.
+double group_gap(const DetectorOptions& options, const BodyTree& a, const BodyTree& b) {
+  const auto diagonal = [](const BodyTree& tree) { return 2 * tree.node(BodyTree::kRoot).half.norm(); };
+  return options.group_gap * std::min(diagonal(a), diagonal(b));
+}
 
 /// A proxy's placement at one time: between two samples the vertices interpolate linearly,
 /// which is an affine (not rigid) map.
@@ -45,28 +52,15 @@ Affine proxy_map(const PartProxy& proxy, double t) {
 /// on every step between consecutive times both parts' vertices move linearly.
 struct PairTimeline {
   int a = 0, b = 0;
-  int first_frame = 0, last_frame = 0;  ///< the frames this range owns (whole frames)
   std::vector<double> times;
   std::vector<Affine> maps[2];
   bool moving[2] = {false, false};  ///< some map differs from the first
 };
 
-/// The pair's timeline over frames [first, last]: from the last sample time (of either part's
-/// proxy, or 0) at or before the first frame's start to the first one at or after the last
-/// frame's end, so that its steps are those of the whole transition's timeline.
-PairTimeline make_timeline(const std::vector<PartProxy>& proxies, const FrameGrid& grid, int a, int b, int first,
-                           int last) {
+PairTimeline make_timeline(const std::vector<PartProxy>& proxies, int a, int b, double t0, double t1) {
   PairTimeline line;
   line.a = a;
   line.b = b;
-  line.first_frame = first;
-  line.last_frame = last;
-  double t0 = 0, t1 = 1;
-  for (int part : {a, b})
-    for (double t : proxies[part].times) {
-      if (t <= grid.lo(first)) t0 = std::max(t0, t);
-      if (t >= grid.hi(last)) t1 = std::min(t1, t);
-    }
   std::vector<double> times = {t0, t1};
   for (int part : {a, b})
     for (double t : proxies[part].times)
@@ -94,8 +88,8 @@ struct WorkItem {
   int s0 = 0, s1 = 0;  ///< sample range of the pair timeline (s1 > s0)
 };
 
-/// Per pair timeline and frame (indexed from the timeline's first frame), what was found.
-using FoundFrames = std::vector<std::vector<detail::FrameContacts>>;
+/// The groups of the contacts found in one proxy step, per frame the step overlaps.
+using StepGroups = std::vector<detail::FrameContacts>;
 
 /// Everything the traversal reads, shared by all threads.
 template <DopFamily family>
@@ -209,11 +203,7 @@ struct Traversal {
     return inflated(box, pad + deviation);
   }
 
-  /// How far apart two contacts of a pair of parts in one frame may lie and still be grouped.
-  double gap(int pair) const {
-    const auto diagonal = [&](int side) { return 2 * tree(pair, side).node(BodyTree::kRoot).half.norm(); };
-    return options.group_gap * std::min(diagonal(0), diagonal(1));
-  }
+  double gap(int pair) const { return group_gap(options, tree(pair, 0), tree(pair, 1)); }
 
   MovingTriangle corners(int pair, int side, int triangle, int s) const {
     const geometry::Mesh& m = mesh(pair, side);
@@ -301,21 +291,12 @@ struct LineContact {
   TriangleContact contact;
 };
 
-/// The groups found so far that pruning may rely on: all of every pair timeline's frames
-/// (breadth first), or those of one step's frames, found within that step (depth first).
-struct FrameLookup {
-  const FoundFrames* lines = nullptr;
-  const std::vector<detail::FrameContacts>* step = nullptr;
-  int step_first_frame = 0;
-
-  const detail::FrameContacts& operator()(int line, int first_frame, int k) const {
-    return step ? (*step)[k - step_first_frame] : (*lines)[line][k - first_frame];
-  }
-};
-
 /// What one work item reads of the contacts found so far, and where its own contacts go.
+/// Pruning relies only on the groups of contacts found in the same proxy step, so that what a
+/// step finds stands on its own (an update drops and re-finds whole steps).
 struct ItemContext {
-  FrameLookup found;
+  /// The groups found so far in one step of a pair timeline, or null if none.
+  std::function<const StepGroups*(int line, int step)> step_groups;
   std::vector<LineContact>& contacts;  ///< contacts the item finds, clipped to frames
   DetectionStats& stats;
 };
@@ -324,18 +305,18 @@ struct ItemContext {
 int frame_of_contact(const FrameGrid& grid, const TriangleContact& c) { return grid.frame_of((c.t0 + c.t1) / 2); }
 
 /// The frames an item may report contacts in: those its time range overlaps for a positive
-/// time among the ones its timeline owns (an instant contact at its start belongs to the
-/// frame on the left, where the previous step reports it).
+/// time (an instant contact at its start on a frame boundary belongs to the frame on the left,
+/// where the previous step reports it).
 template <DopFamily family>
 std::pair<int, int> item_frames(const Traversal<family>& tr, const WorkItem& item) {
   const PairTimeline& line = tr.lines[item.pair];
-  const auto [first, last] = tr.grid.frames_overlapping(line.times[item.s0], line.times[item.s1]);
-  return {std::max(first, line.first_frame), std::min(last, line.last_frame)};
+  return tr.grid.frames_overlapping(line.times[item.s0], line.times[item.s1]);
 }
 
-/// Whether every contact the item could find would fall inside a group its frames already
-/// have: in each frame k, within the item's time range clipped to the frame, [t0, t1], and
-/// within `box_between(t0, t1)`, the box where the item's contacts over that time can lie.
+/// Whether every contact the item could find would fall inside a group of its step (for an
+/// item over one step), or there is none to find: in each frame k, within the item's time
+/// range clipped to the frame, [t0, t1], and within `box_between(t0, t1)`, the box where the
+/// item's contacts over that time can lie (empty if the two nodes cannot meet then).
 template <DopFamily family>
 bool covered(const Traversal<family>& tr, const WorkItem& item, const ItemContext& context, const auto& box_between) {
   if (tr.options.all_contacts) return false;
@@ -344,17 +325,16 @@ bool covered(const Traversal<family>& tr, const WorkItem& item, const ItemContex
   const auto window = [&](int k) {
     return std::pair{std::max(line.times[item.s0], tr.grid.lo(k)), std::min(line.times[item.s1], tr.grid.hi(k))};
   };
-  // A frame whose window the item's box cannot reach (empty box) has nothing to find.
-  // The cheap test first: are the times covered at all?
-  for (int k = first; k <= last; ++k) {
+  const StepGroups* groups = item.s1 - item.s0 == 1 ? context.step_groups(item.pair, item.s0) : nullptr;
+  for (int k = first; k <= last; ++k) {  // the cheap test first: are the times covered at all?
     const auto [t0, t1] = window(k);
-    if (context.found(item.pair, line.first_frame, k).covers_time(t0, t1)) continue;
+    if (groups && (*groups)[k - first].covers_time(t0, t1)) continue;
     if (!box_between(t0, t1).isEmpty()) return false;
   }
   for (int k = first; k <= last; ++k) {
     const auto [t0, t1] = window(k);
     const Eigen::AlignedBox3d box = box_between(t0, t1);
-    if (!box.isEmpty() && !context.found(item.pair, line.first_frame, k).covers(t0, t1, box)) return false;
+    if (!box.isEmpty() && !(groups && (*groups)[k - first].covers(t0, t1, box))) return false;
   }
   return true;
 }
@@ -542,38 +522,57 @@ void add_stats(DetectionStats& into, const DetectionStats& s) {
 /// Steps processed between two progress reports in the depth-first phase.
 constexpr std::size_t kStepsPerBatch = 16;
 
-/// Records contacts found (in a deterministic order) in their frames' groups.
-void record(std::vector<LineContact>& batch, const std::vector<PairTimeline>& lines, const FrameGrid& grid,
-            FoundFrames& found, std::vector<TriangleContact>& contacts) {
-  std::sort(batch.begin(), batch.end(), [](const LineContact& x, const LineContact& y) {
-    return contact_less(x.contact, y.contact) || (!contact_less(y.contact, x.contact) && x.line < y.line);
-  });
-  for (const LineContact& c : batch) {
-    found[c.line][frame_of_contact(grid, c.contact) - lines[c.line].first_frame].add(c.contact);
-    contacts.push_back(c.contact);
+/// The groups of the contacts found so far, per pair timeline and proxy step: what pruning
+/// relies on.
+template <DopFamily family>
+class FoundSteps {
+ public:
+  explicit FoundSteps(const Traversal<family>& tr) : tr_(tr), groups_(tr.lines.size()) {
+    for (std::size_t i = 0; i < tr.lines.size(); ++i) groups_[i].resize(tr.lines[i].times.size() - 1);
   }
-  batch.clear();
-}
+
+  /// The groups of a step, or null while it has none.
+  const StepGroups* of(int line, int step) const {
+    const StepGroups& groups = groups_[line][step];
+    return groups.empty() ? nullptr : &groups;
+  }
+
+  /// Adds a contact found on a pair timeline to the groups of its step (contacts over several
+  /// steps, of parts holding still, prune nothing and are left out). Steps are independent:
+  /// contacts of different steps may be added concurrently.
+  void add(int line, const TriangleContact& contact) {
+    const std::vector<double>& times = tr_.lines[line].times;
+    const int step = static_cast<int>(std::lower_bound(times.begin(), times.end(), contact.step_t0) - times.begin());
+    if (step + 1 >= static_cast<int>(times.size()) || times[step + 1] != contact.step_t1) return;
+    const int first = tr_.grid.frames_overlapping(times[step], times[step + 1]).first;
+    StepGroups& groups = groups_[line][step];
+    if (groups.empty())
+      groups.assign(tr_.grid.frames_overlapping(times[step], times[step + 1]).second - first + 1,
+                    detail::FrameContacts(tr_.gap(line)));
+    groups[frame_of_contact(tr_.grid, contact) - first].add(contact);
+  }
+
+ private:
+  const Traversal<family>& tr_;
+  std::vector<std::vector<StepGroups>> groups_;
+};
 
 template <DopFamily family>
-bool run_traversal(const Traversal<family>& tr, FoundFrames& found, std::vector<TriangleContact>& contacts,
-                   DetectionStats& stats, const DetectCallbacks& callbacks) {
-  found.assign(tr.lines.size(), {});
+bool run_traversal(const Traversal<family>& tr, std::vector<TriangleContact>& contacts, DetectionStats& stats,
+                   const DetectCallbacks& callbacks) {
+  FoundSteps<family> found(tr);
+  const auto step_groups = [&](int line, int step) { return found.of(line, step); };
   std::vector<WorkItem> level;
   int max_depth = 1, max_steps = 1;
   for (int i = 0; i < static_cast<int>(tr.lines.size()); ++i) {
-    const PairTimeline& line = tr.lines[i];
-    found[i].resize(line.last_frame - line.first_frame + 1, detail::FrameContacts(tr.gap(i)));
-    const int steps = static_cast<int>(line.times.size()) - 1;
+    const int steps = static_cast<int>(tr.lines[i].times.size()) - 1;
     level.push_back({i, BodyTree::kRoot, BodyTree::kRoot, 0, steps});
     max_depth = std::max(max_depth, tr.tree(i, 0).depth() + tr.tree(i, 1).depth());
     max_steps = std::max(max_steps, steps);
   }
-  const auto found_ranges = [&] {
+  const auto contact_ranges = [&] {
     std::vector<std::pair<double, double>> ranges;
-    for (const auto& frames : found)
-      for (const detail::FrameContacts& frame : frames)
-        for (const CollisionInterval& group : frame.groups()) ranges.push_back({group.t0, group.t1});
+    for (const TriangleContact& c : contacts) ranges.push_back({c.t0, c.t1});
     return ranges;
   };
 
@@ -587,7 +586,7 @@ bool run_traversal(const Traversal<family>& tr, FoundFrames& found, std::vector<
     tbb::combinable<DetectionStats> stat_parts;
     const auto run = [&](std::size_t begin, std::size_t end) {
       auto& next = next_parts.local();
-      const ItemContext context{{&found, nullptr, 0}, found_parts.local(), stat_parts.local()};
+      const ItemContext context{step_groups, found_parts.local(), stat_parts.local()};
       for (std::size_t i = begin; i < end; ++i) process(tr, level[i], next, context);
     };
     if (level.size() < 512) run(0, level.size());
@@ -598,91 +597,107 @@ bool run_traversal(const Traversal<family>& tr, FoundFrames& found, std::vector<
     next_parts.combine_each([&](const std::vector<WorkItem>& part) { next.insert(next.end(), part.begin(), part.end()); });
     std::vector<LineContact> batch;
     found_parts.combine_each([&](const std::vector<LineContact>& part) { batch.insert(batch.end(), part.begin(), part.end()); });
-    record(batch, tr.lines, tr.grid, found, contacts);
+    // In an order that does not depend on the threads.
+    std::sort(batch.begin(), batch.end(), [](const LineContact& x, const LineContact& y) {
+      return contact_less(x.contact, y.contact) || (!contact_less(y.contact, x.contact) && x.line < y.line);
+    });
+    for (const LineContact& c : batch) {
+      found.add(c.line, c.contact);
+      contacts.push_back(c.contact);
+    }
     stat_parts.combine_each([&](const DetectionStats& s) { add_stats(stats, s); });
     stats.levels = depth;
     if (callbacks.preview) {
-      std::vector<std::pair<double, double>> ranges = found_ranges();
+      std::vector<std::pair<double, double>> ranges = contact_ranges();
       for (const WorkItem& item : next) ranges.push_back({tr.lines[item.pair].times[item.s0], tr.lines[item.pair].times[item.s1]});
       callbacks.preview({depth, union_of(std::move(ranges))});
     }
     if (!report_progress(callbacks.progress, std::min(0.5, 0.5 * depth / expected_levels))) return false;
-    // Sorted, so that the order of discovery does not depend on the threads.
     std::sort(next.begin(), next.end(), [](const WorkItem& x, const WorkItem& y) {
       return std::tie(x.pair, x.s0, x.node_a, x.node_b, x.s1) < std::tie(y.pair, y.s0, y.node_a, y.node_b, y.s1);
     });
     level = std::move(next);
   }
-  if (level.empty()) return true;
-
-  // Depth first, one step of one pair timeline at a time (the steps in parallel): contacts
-  // found grow the groups of the step's frames at once, and what they cover is skipped. Each
-  // step prunes with what it found itself, so the work done does not depend on the threads.
-  std::vector<WorkItem> items;
-  for (const WorkItem& item : level)
-    for (int s = item.s0; s < item.s1; ++s) items.push_back({item.pair, item.node_a, item.node_b, s, s + 1});
-  std::sort(items.begin(), items.end(), [](const WorkItem& x, const WorkItem& y) {
-    return std::tie(x.pair, x.s0, x.node_a, x.node_b) < std::tie(y.pair, y.s0, y.node_a, y.node_b);
-  });
-  std::vector<std::pair<std::size_t, std::size_t>> steps;  // runs of items of one step
-  for (std::size_t i = 0; i < items.size(); ++i)
-    if (i == 0 || items[i].pair != items[i - 1].pair || items[i].s0 != items[i - 1].s0) steps.push_back({i, i + 1});
-    else steps.back().second = i + 1;
-  for (std::size_t first = 0; first < steps.size(); first += kStepsPerBatch) {
-    const std::size_t end = std::min(steps.size(), first + kStepsPerBatch);
-    std::vector<std::vector<LineContact>> batch_contacts(end - first);
-    std::vector<DetectionStats> batch_stats(end - first);
-    tbb::parallel_for(first, end, [&](std::size_t g) {
-      const auto [first_frame, last_frame] = item_frames(tr, items[steps[g].first]);
-      if (first_frame > last_frame) return;  // the step lies outside the frames to detect
-      std::vector<detail::FrameContacts> frames(last_frame - first_frame + 1, detail::FrameContacts(tr.gap(items[steps[g].first].pair)));
-      std::vector<LineContact>& local = batch_contacts[g - first];
-      const ItemContext context{{nullptr, &frames, first_frame}, local, batch_stats[g - first]};
-      // Depth first from `stack` until it is empty, or (probing) until a contact is found.
-      std::vector<WorkItem> children;
-      const auto descend = [&](std::vector<WorkItem>& stack, bool probe) {
-        while (!stack.empty()) {
-          const WorkItem item = stack.back();
-          stack.pop_back();
-          const std::size_t known = local.size();
-          process(tr, item, children, context);
-          for (std::size_t c = known; c < local.size(); ++c)
-            frames[frame_of_contact(tr.grid, local[c].contact) - first_frame].add(local[c].contact);
-          stack.insert(stack.end(), children.rbegin(), children.rend());
-          children.clear();
-          if (probe && local.size() > known) return;
-        }
-      };
-      // First a probe from each of the step's items, to find contacts all over the region
-      // (so the groups' boxes are nearly whole early), then the rest.
-      std::vector<WorkItem> rest;
-      for (std::size_t i = steps[g].first; i < steps[g].second; ++i) {
-        std::vector<WorkItem> stack = {items[i]};
-        descend(stack, true);
-        rest.insert(rest.end(), stack.rbegin(), stack.rend());
-      }
-      std::reverse(rest.begin(), rest.end());
-      descend(rest, false);
+  if (!level.empty()) {
+    // Depth first, one step of one pair timeline at a time (the steps in parallel): contacts
+    // found grow the groups of the step's frames at once, and what they cover is skipped.
+    std::vector<WorkItem> items;
+    for (const WorkItem& item : level)
+      for (int s = item.s0; s < item.s1; ++s) items.push_back({item.pair, item.node_a, item.node_b, s, s + 1});
+    std::sort(items.begin(), items.end(), [](const WorkItem& x, const WorkItem& y) {
+      return std::tie(x.pair, x.s0, x.node_a, x.node_b) < std::tie(y.pair, y.s0, y.node_a, y.node_b);
     });
-    for (std::size_t g = first; g < end; ++g) {
-      for (const LineContact& c : batch_contacts[g - first]) {
-        found[c.line][frame_of_contact(tr.grid, c.contact) - tr.lines[c.line].first_frame].add(c.contact);
-        contacts.push_back(c.contact);
+    std::vector<std::pair<std::size_t, std::size_t>> steps;  // runs of items of one step
+    for (std::size_t i = 0; i < items.size(); ++i)
+      if (i == 0 || items[i].pair != items[i - 1].pair || items[i].s0 != items[i - 1].s0) steps.push_back({i, i + 1});
+      else steps.back().second = i + 1;
+    for (std::size_t first = 0; first < steps.size(); first += kStepsPerBatch) {
+      const std::size_t end = std::min(steps.size(), first + kStepsPerBatch);
+      std::vector<std::vector<LineContact>> batch_contacts(end - first);
+      std::vector<DetectionStats> batch_stats(end - first);
+      tbb::parallel_for(first, end, [&](std::size_t g) {
+        std::vector<LineContact>& local = batch_contacts[g - first];
+        const ItemContext context{step_groups, local, batch_stats[g - first]};
+        // Depth first from `stack` until it is empty, or (probing) until a contact is found.
+        std::vector<WorkItem> children;
+        const auto descend = [&](std::vector<WorkItem>& stack, bool probe) {
+          while (!stack.empty()) {
+            const WorkItem item = stack.back();
+            stack.pop_back();
+            const std::size_t known = local.size();
+            process(tr, item, children, context);
+            for (std::size_t c = known; c < local.size(); ++c) found.add(local[c].line, local[c].contact);
+            stack.insert(stack.end(), children.rbegin(), children.rend());
+            children.clear();
+            if (probe && local.size() > known) return;
+          }
+        };
+        // First a probe from each of the step's items, to find contacts all over the region
+        // (so the groups' boxes are nearly whole early), then the rest.
+        std::vector<WorkItem> rest;
+        for (std::size_t i = steps[g].first; i < steps[g].second; ++i) {
+          std::vector<WorkItem> stack = {items[i]};
+          descend(stack, true);
+          rest.insert(rest.end(), stack.rbegin(), stack.rend());
+        }
+        std::reverse(rest.begin(), rest.end());
+        descend(rest, false);
+      });
+      for (std::size_t g = first; g < end; ++g) {
+        for (const LineContact& c : batch_contacts[g - first]) contacts.push_back(c.contact);
+        add_stats(stats, batch_stats[g - first]);
       }
-      add_stats(stats, batch_stats[g - first]);
-    }
-    if (callbacks.preview) {
-      std::vector<std::pair<double, double>> ranges = found_ranges();
-      for (std::size_t g = end; g < steps.size(); ++g) {
-        const WorkItem& item = items[steps[g].first];
-        ranges.push_back({tr.lines[item.pair].times[item.s0], tr.lines[item.pair].times[item.s1]});
+      if (callbacks.preview) {
+        std::vector<std::pair<double, double>> ranges = contact_ranges();
+        for (std::size_t g = end; g < steps.size(); ++g) {
+          const WorkItem& item = items[steps[g].first];
+          ranges.push_back({tr.lines[item.pair].times[item.s0], tr.lines[item.pair].times[item.s1]});
+        }
+        callbacks.preview({depth, union_of(std::move(ranges))});
       }
-      callbacks.preview({depth, union_of(std::move(ranges))});
+      if (!report_progress(callbacks.progress, 0.5 + 0.5 * static_cast<double>(end) / steps.size())) return false;
     }
-    if (!report_progress(callbacks.progress, 0.5 + 0.5 * static_cast<double>(end) / steps.size())) return false;
   }
   std::sort(contacts.begin(), contacts.end(), contact_less);
   return true;
+}
+
+/// The groups of every pair of parts and frame: merging the contacts that meet, to the fixpoint.
+std::vector<CollisionInterval> group_contacts(const std::vector<TriangleContact>& contacts, const FrameGrid& grid,
+                                              const std::function<double(int, int)>& gap) {
+  std::map<std::tuple<int, int, int>, detail::FrameContacts> frames;  // by parts and frame
+  for (const TriangleContact& c : contacts) {
+    const auto key = std::tuple{c.part_a, c.part_b, frame_of_contact(grid, c)};
+    auto at = frames.find(key);
+    if (at == frames.end()) at = frames.emplace(key, detail::FrameContacts(gap(c.part_a, c.part_b))).first;
+    at->second.add(c);
+  }
+  std::vector<CollisionInterval> groups;
+  for (const auto& [key, frame] : frames) groups.insert(groups.end(), frame.groups().begin(), frame.groups().end());
+  std::sort(groups.begin(), groups.end(), [](const CollisionInterval& x, const CollisionInterval& y) {
+    return std::tie(x.t0, x.parts, x.t1) < std::tie(y.t0, y.parts, y.t1);
+  });
+  return groups;
 }
 
 /// The posed (proxy) vertices of a part at time t.
@@ -721,13 +736,11 @@ bool SpacetimeDetector::detect(const scene::Reconfigurable& scene, const BodyTre
   tbb::parallel_for(0, n, [&](int p) {
     proxies_[p] = build_part_proxy(scene, transition_, p, options_.tolerance, options_.min_step);
   });
-  groups_.clear();
   contacts_.clear();
   containments_.clear();
-  const int frames = FrameGrid(options_.frame).count();
   std::vector<PairRange> work;
   for (int a = 0; a < n; ++a)
-    for (int b = a + 1; b < n; ++b) work.push_back({a, b, 0, frames - 1});
+    for (int b = a + 1; b < n; ++b) work.push_back({a, b, 0.0, 1.0});
   if (!traverse(scene, trees, work, callbacks)) return false;
   valid_ = true;
   return true;
@@ -757,32 +770,18 @@ bool SpacetimeDetector::update(const scene::Reconfigurable& scene, const BodyTre
     for (const auto& range : ranges)
       for (int q = 0; q < n; ++q)
         if (q != part) pair_ranges[{std::min(part, q), std::max(part, q)}].push_back(range);
-  // Re-traverse whole frames: a frame's groups are rebuilt from scratch or kept as they are.
-  const FrameGrid grid(options_.frame);
   std::vector<PairRange> work;
   std::set<std::pair<int, int>> pairs;
   for (auto& [pair, ranges] : pair_ranges) {
     pairs.insert(pair);
-    std::vector<std::pair<int, int>> frames;  // the frames holding the changed ranges, merged when they touch
-    for (const auto& [t0, t1] : ranges) frames.push_back({grid.frame_of(t0), grid.frame_of(t1)});
-    std::sort(frames.begin(), frames.end());
-    for (const auto& [first, last] : frames)
-      if (!work.empty() && work.back().a == pair.first && work.back().b == pair.second && first <= work.back().last_frame + 1)
-        work.back().last_frame = std::max(work.back().last_frame, last);
-      else
-        work.push_back({pair.first, pair.second, first, last});
+    for (const auto& [t0, t1] : union_of(ranges)) work.push_back({pair.first, pair.second, t0, t1});
   }
-  // Drop what the re-traversal finds again: the groups and contacts of its frames.
-  const auto retraversed = [&](int a, int b, int frame) {
-    return std::any_of(work.begin(), work.end(), [&](const PairRange& w) {
-      return w.a == a && w.b == b && frame >= w.first_frame && frame <= w.last_frame;
-    });
-  };
-  std::erase_if(groups_, [&](const CollisionInterval& g) {
-    return retraversed(g.parts[0], g.parts[1], grid.frame_of((g.t0 + g.t1) / 2));
-  });
+  // Drop what the re-traversal will find again: contacts found in a re-traversed step (what a
+  // step found stands on its own: its pruning relied on nothing else).
   std::erase_if(contacts_, [&](const TriangleContact& c) {
-    return retraversed(c.part_a, c.part_b, grid.frame_of((c.t0 + c.t1) / 2));
+    return std::any_of(work.begin(), work.end(), [&](const PairRange& w) {
+      return w.a == c.part_a && w.b == c.part_b && c.step_t0 >= w.t0 && c.step_t1 <= w.t1;
+    });
   });
   std::erase_if(containments_, [&](const Containment& c) {
     return pairs.count({std::min(c.inner, c.outer), std::max(c.inner, c.outer)}) > 0;
@@ -792,16 +791,14 @@ bool SpacetimeDetector::update(const scene::Reconfigurable& scene, const BodyTre
 
 bool SpacetimeDetector::traverse(const scene::Reconfigurable& scene, const BodyTrees& trees,
                                  const std::vector<PairRange>& work, const DetectCallbacks& callbacks) {
-  const FrameGrid grid(options_.frame);
   std::vector<PairTimeline> lines;
-  for (const PairRange& w : work) lines.push_back(make_timeline(proxies_, grid, w.a, w.b, w.first_frame, w.last_frame));
+  for (const PairRange& w : work) lines.push_back(make_timeline(proxies_, w.a, w.b, w.t0, w.t1));
   for (const PartProxy& proxy : proxies_) stats_.proxy_samples += static_cast<long>(proxy.times.size());
-  FoundFrames found;
   std::vector<TriangleContact> contacts;
   bool finished = false;
   const auto run = [&]<DopFamily family>() {
     const Traversal<family> traversal(scene, trees, proxies_, options_, std::move(lines));
-    finished = run_traversal(traversal, found, contacts, stats_, callbacks);
+    finished = run_traversal(traversal, contacts, stats_, callbacks);
   };
   switch (options_.dop) {
     case DopFamily::k8: run.template operator()<DopFamily::k8>(); break;
@@ -812,13 +809,10 @@ bool SpacetimeDetector::traverse(const scene::Reconfigurable& scene, const BodyT
     valid_ = false;
     return false;
   }
-  for (const auto& frames : found)
-    for (const detail::FrameContacts& frame : frames) groups_.insert(groups_.end(), frame.groups().begin(), frame.groups().end());
-  std::sort(groups_.begin(), groups_.end(), [](const CollisionInterval& x, const CollisionInterval& y) {
-    return std::tie(x.t0, x.parts, x.t1) < std::tie(y.t0, y.parts, y.t1);
-  });
   contacts_.insert(contacts_.end(), contacts.begin(), contacts.end());
   std::sort(contacts_.begin(), contacts_.end(), contact_less);
+  groups_ = group_contacts(contacts_, FrameGrid(options_.frame),
+                           [&](int a, int b) { return group_gap(options_, *trees[a], *trees[b]); });
 
   if (options_.detect_containment) {
     // Nesting can only change when surfaces cross: test once per contact-free stretch.

@@ -113,8 +113,8 @@ class SpacetimeDetector {
 
  private:
   struct PairRange {
-    int a, b;                     ///< parts, a < b
-    int first_frame, last_frame;  ///< the frames to traverse
+    int a, b;       ///< parts, a < b
+    double t0, t1;  ///< time range to traverse (proxy sample times, or 0 and 1)
   };
   bool traverse(const scene::Reconfigurable& scene, const BodyTrees& trees, const std::vector<PairRange>& work,
                 const DetectCallbacks& callbacks);
