@@ -4,8 +4,10 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <cassert>
 #include <atomic>
 #include <cmath>
+#include <deque>
 #include <functional>
 #include <map>
 #include <set>
@@ -372,11 +374,11 @@ void process(const Traversal<family>& tr, const WorkItem& item, std::vector<Work
     push(item.node_a, item.node_b, middle, item.s1);
   };
   if (na.leaf() && nb.leaf()) {
-    const auto [first_frame, last_frame] = item_frames(tr, item);
     // The narrow phase of the two triangles over samples [s0, s1]: one step, or a range over
     // which both hold still.
     const auto leaves = [&](int s0, int s1) {
       const double t0 = line.times[s0], t1 = line.times[s1];
+      const auto [first_frame, last_frame] = tr.grid.frames_overlapping(t0, t1);
       const auto time_at = [&](double mu) { return mu == 0 ? t0 : mu == 1 ? t1 : t0 + mu * (t1 - t0); };
       const auto mu_at = [&](double t) { return (t - t0) / (t1 - t0); };
       // Reports the contact over step parameters [mu0, mu1] clipped to each of the item's frames.
@@ -544,12 +546,12 @@ class FoundSteps {
     const std::vector<double>& times = tr_.lines[line].times;
     const int step = static_cast<int>(std::lower_bound(times.begin(), times.end(), contact.step_t0) - times.begin());
     if (step + 1 >= static_cast<int>(times.size()) || times[step + 1] != contact.step_t1) return;
-    const int first = tr_.grid.frames_overlapping(times[step], times[step + 1]).first;
+    const auto [first, last] = tr_.grid.frames_overlapping(times[step], times[step + 1]);
     StepGroups& groups = groups_[line][step];
-    if (groups.empty())
-      groups.assign(tr_.grid.frames_overlapping(times[step], times[step + 1]).second - first + 1,
-                    detail::FrameContacts(tr_.gap(line)));
-    groups[frame_of_contact(tr_.grid, contact) - first].add(contact);
+    if (groups.empty()) groups.assign(last - first + 1, detail::FrameContacts(tr_.gap(line)));
+    const int frame = frame_of_contact(tr_.grid, contact);
+    assert(frame >= first && frame <= last);  // a step reports contacts in its own frames only
+    groups[frame - first].add(contact);
   }
 
  private:
@@ -638,9 +640,9 @@ bool run_traversal(const Traversal<family>& tr, std::vector<TriangleContact>& co
       tbb::parallel_for(first, end, [&](std::size_t g) {
         std::vector<LineContact>& local = batch_contacts[g - first];
         const ItemContext context{step_groups, local, batch_stats[g - first]};
-        // Depth first from `stack` until it is empty, or (probing) until a contact is found.
+        // Depth first from `stack` until a contact is found, or until it is empty.
         std::vector<WorkItem> children;
-        const auto descend = [&](std::vector<WorkItem>& stack, bool probe) {
+        const auto probe = [&](std::vector<WorkItem>& stack) {
           while (!stack.empty()) {
             const WorkItem item = stack.back();
             stack.pop_back();
@@ -649,19 +651,22 @@ bool run_traversal(const Traversal<family>& tr, std::vector<TriangleContact>& co
             for (std::size_t c = known; c < local.size(); ++c) found.add(local[c].line, local[c].contact);
             stack.insert(stack.end(), children.rbegin(), children.rend());
             children.clear();
-            if (probe && local.size() > known) return;
+            if (local.size() > known) return;
           }
         };
-        // First a probe from each of the step's items, to find contacts all over the region
-        // (so the groups' boxes are nearly whole early), then the rest.
-        std::vector<WorkItem> rest;
-        for (std::size_t i = steps[g].first; i < steps[g].second; ++i) {
-          std::vector<WorkItem> stack = {items[i]};
-          descend(stack, true);
-          rest.insert(rest.end(), stack.rbegin(), stack.rend());
+        // Probe every subtree until it yields its first contact, in breadth-first order of the
+        // probes: what a probe leaves (the siblings on its way down) is probed later, so the
+        // contacts found early lie all over the region and the groups' boxes are nearly whole
+        // before most of the work is looked at.
+        std::deque<WorkItem> queue(items.begin() + static_cast<std::ptrdiff_t>(steps[g].first),
+                                   items.begin() + static_cast<std::ptrdiff_t>(steps[g].second));
+        std::vector<WorkItem> stack;
+        while (!queue.empty()) {
+          stack.assign(1, queue.front());
+          queue.pop_front();
+          probe(stack);
+          queue.insert(queue.end(), stack.begin(), stack.end());
         }
-        std::reverse(rest.begin(), rest.end());
-        descend(rest, false);
       });
       for (std::size_t g = first; g < end; ++g) {
         for (const LineContact& c : batch_contacts[g - first]) contacts.push_back(c.contact);

@@ -22,8 +22,9 @@ struct CollisionInterval {
   /// Conservative detection only: every contact merged here is a near miss of the proxies
   /// that the true motion may turn into a collision (no confirmed intersection).
   bool possible = false;
-  /// The triangle pairs involved (part a, triangle a, part b, triangle b); empty for the
-  /// reference check and for pure containment.
+  /// The triangle pairs involved (part a, triangle a, part b, triangle b): those the detector
+  /// found — every one with `DetectorOptions::all_contacts`, else the witnesses that fixed the
+  /// interval's extent; empty for the reference check and for pure containment.
   std::vector<std::array<int, 4>> triangles;
 
   double duration() const { return t1 - t0; }

@@ -8,7 +8,8 @@ namespace reconfig::collision {
 
 /// Triangle `triangle_a` of part `part_a` and `triangle_b` of part `part_b` (part_a < part_b)
 /// intersect at every time of [t0, t1] (closed; t0 == t1 for an instant), as the parts'
-/// spacetime proxies move.
+/// spacetime proxies move. The detector clips contacts to frames (`FrameGrid`): [t0, t1]
+/// lies within one frame.
 struct TriangleContact {
   int part_a = 0, triangle_a = 0;
   int part_b = 0, triangle_b = 0;
