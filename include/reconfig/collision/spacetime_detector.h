@@ -2,8 +2,11 @@
 /// @file
 /// The spacetime collision detector of one transition: a 4D k-DOP bounding volume hierarchy
 /// over the parts' spacetime proxies, traversed breadth first ("time first": coarse time
-/// extents of possible collisions are known level by level), with an exact narrow phase at
-/// the leaves, and local refitting after edits (reconfigurables §5).
+/// extents of possible collisions are known level by level), then depth first one proxy step
+/// at a time, with an exact narrow phase at the leaves, and local refitting after edits
+/// (reconfigurables §5). Contacts are merged per pair of parts and frame into groups, and the
+/// traversal skips whatever could only add contacts inside a group it already has, so a deep
+/// overlap costs its witnesses rather than every intersecting triangle pair.
 
 #include <cstddef>
 #include <functional>
