@@ -1,0 +1,738 @@
+#include "collision/detail/spacetime_traversal.h"
+
+#include <tbb/combinable.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <deque>
+#include <functional>
+#include <map>
+#include <tuple>
+
+#include "collision/detail/frame_contacts.h"
+#include "reconfig/collision/frame_grid.h"
+#include "reconfig/collision/triangle_pair_ccd.h"
+#include "reconfig/geometry/triangle_intersection.h"
+
+namespace reconfig::collision::detail {
+namespace {
+
+using MovingTriangle = std::array<Eigen::Vector3d, 3>;
+
+/// How far apart two contacts of a pair of parts in one frame may lie and still be grouped.
+double group_gap(const DetectorOptions& options, const BodyTree& a, const BodyTree& b) {
+  const auto diagonal = [](const BodyTree& tree) { return 2 * tree.node(BodyTree::kRoot).half.norm(); };
+  return options.group_gap * std::min(diagonal(a), diagonal(b));
+}
+
+/// A proxy's placement at one time: between two samples the vertices interpolate linearly,
+/// which is an affine (not rigid) map.
+struct Affine {
+  Eigen::Matrix3d L = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d x = Eigen::Vector3d::Zero();
+  Eigen::Vector3d operator()(const Eigen::Vector3d& v) const { return L * v + x; }
+  bool operator==(const Affine& o) const { return L == o.L && x == o.x; }
+};
+
+Affine proxy_map(const PartProxy& proxy, double t) {
+  const int k = proxy.step_of(t);
+  const double t0 = proxy.times[k], t1 = proxy.times[k + 1];
+  const Eigen::Isometry3d& P0 = proxy.poses[k];
+  const Eigen::Isometry3d& P1 = proxy.poses[k + 1];
+  if (t <= t0) return {P0.linear(), P0.translation()};
+  if (t >= t1) return {P1.linear(), P1.translation()};
+  const double s = (t - t0) / (t1 - t0);
+  return {(1 - s) * P0.linear() + s * P1.linear(), (1 - s) * P0.translation() + s * P1.translation()};
+}
+
+/// Both parts of a pair placed at the merged sample times of their proxies over a range:
+/// on every step between consecutive times both parts' vertices move linearly.
+struct PairTimeline {
+  int a = 0, b = 0;
+  std::vector<double> times;
+  std::vector<Affine> maps[2];
+  bool moving[2] = {false, false};  ///< some map differs from the first
+};
+
+PairTimeline make_timeline(const std::vector<PartProxy>& proxies, int a, int b, double t0, double t1) {
+  PairTimeline line;
+  line.a = a;
+  line.b = b;
+  std::vector<double> times = {t0, t1};
+  for (int part : {a, b})
+    for (double t : proxies[part].times)
+      if (t > t0 && t < t1) times.push_back(t);
+  std::sort(times.begin(), times.end());
+  times.erase(std::unique(times.begin(), times.end()), times.end());
+  line.times = times;
+  for (int side = 0; side < 2; ++side) {
+    const PartProxy& proxy = proxies[side == 0 ? a : b];
+    for (double t : times) line.maps[side].push_back(proxy_map(proxy, t));
+    for (const Affine& m : line.maps[side]) line.moving[side] = line.moving[side] || !(m == line.maps[side][0]);
+  }
+  return line;
+}
+
+Eigen::AlignedBox3d inflated(Eigen::AlignedBox3d box, double by) {
+  box.min().array() -= by;
+  box.max().array() += by;
+  return box;
+}
+
+struct WorkItem {
+  int pair = 0;
+  int node_a = 0, node_b = 0;
+  int s0 = 0, s1 = 0;  ///< sample range of the pair timeline (s1 > s0)
+};
+
+/// The groups of the contacts found in one proxy step, per frame the step overlaps.
+using StepGroups = std::vector<FrameContacts>;
+
+/// Everything the traversal reads, shared by all threads.
+template <DopFamily family>
+struct Traversal {
+  using Dop = Kdop<family>;
+  static constexpr int K = Dop::kAxes;
+
+  const scene::Reconfigurable& scene;
+  const BodyTrees& trees;
+  const std::vector<PartProxy>& proxies;
+  const DetectorOptions& options;
+  const FrameGrid grid;
+  std::vector<PairTimeline> lines;
+  /// Per pair, side and sample: u_i = Lᵀ ds_i and the offset ds_i·x + dt_i τ of each axis.
+  struct SampleAxes {
+    std::array<Eigen::Vector3d, K> u;
+    std::array<double, K> offset;
+  };
+  std::vector<std::array<std::vector<SampleAxes>, 2>> axes;
+  double pad = 0;  ///< absolute padding against rounding in bound arithmetic
+
+  Traversal(const scene::Reconfigurable& s, const BodyTrees& t, const std::vector<PartProxy>& p,
+            const DetectorOptions& o, std::vector<PairTimeline> l)
+      : scene(s), trees(t), proxies(p), options(o), grid(o.frame), lines(std::move(l)) {
+    const auto& dirs = dop_axes<family>();
+    double scale = 1;
+    axes.resize(lines.size());
+    for (std::size_t i = 0; i < lines.size(); ++i)
+      for (int side = 0; side < 2; ++side)
+        for (std::size_t k = 0; k < lines[i].times.size(); ++k) {
+          const Affine& m = lines[i].maps[side][k];
+          SampleAxes sample;
+          for (int j = 0; j < K; ++j) {
+            const Eigen::Vector3d ds = dirs[j].template head<3>();
+            sample.u[j] = m.L.transpose() * ds;
+            sample.offset[j] = ds.dot(m.x) + dirs[j][3] * lines[i].times[k];
+          }
+          scale = std::max(scale, m.x.cwiseAbs().maxCoeff());
+          axes[i][side].push_back(sample);
+        }
+    for (int p2 = 0; p2 < static_cast<int>(scene.parts.size()); ++p2)
+      scale = std::max(scale, scene.parts[p2].mesh.V.cwiseAbs().maxCoeff());
+    pad = 64 * std::numeric_limits<double>::epsilon() * scale;
+  }
+
+  const geometry::Mesh& mesh(int pair, int side) const { return scene.parts[side == 0 ? lines[pair].a : lines[pair].b].mesh; }
+  const BodyTree& tree(int pair, int side) const { return *trees[side == 0 ? lines[pair].a : lines[pair].b]; }
+
+  Dop bound(int pair, int side, int node_index, int s0, int s1) const {
+    const BodyTree::Node& node = tree(pair, side).node(node_index);
+    const auto& samples = axes[pair][side];
+    Dop dop;
+    if (node.leaf()) {
+      const geometry::Mesh& m = mesh(pair, side);
+      for (int c = 0; c < 3; ++c) {
+        const Eigen::Vector3d v = m.V.row(m.F(node.triangle, c));
+        for (int s = s0; s <= s1; ++s)
+          for (int j = 0; j < K; ++j) {
+            const double value = samples[s].u[j].dot(v) + samples[s].offset[j];
+            dop.lo[j] = std::min(dop.lo[j], value);
+            dop.hi[j] = std::max(dop.hi[j], value);
+          }
+      }
+    } else {
+      for (int s = s0; s <= s1; ++s)
+        for (int j = 0; j < K; ++j) {
+          const Eigen::Vector3d& u = samples[s].u[j];
+          const double center = u.dot(node.center) + samples[s].offset[j];
+          const double reach = u.cwiseAbs().dot(node.half);
+          dop.lo[j] = std::min(dop.lo[j], center - reach);
+          dop.hi[j] = std::max(dop.hi[j], center + reach);
+        }
+    }
+    for (int j = 0; j < K; ++j) {
+      dop.lo[j] -= pad;
+      dop.hi[j] += pad;
+    }
+    if (options.conservative) dop.inflate(proxies[side == 0 ? lines[pair].a : lines[pair].b].deviation);
+    return dop;
+  }
+
+  /// The spatial box of a node over the time range [t0, t1] of the pair's timeline, padded
+  /// like `bound` (and grown by `deviation`): that of its placements at t0, t1 and the samples
+  /// between, as it moves linearly in between.
+  Eigen::AlignedBox3d box_between(int pair, int side, int node_index, double t0, double t1, double deviation) const {
+    const PairTimeline& line = lines[pair];
+    const BodyTree::Node& node = tree(pair, side).node(node_index);
+    const geometry::Mesh& m = mesh(pair, side);
+    Eigen::AlignedBox3d box;
+    const auto extend = [&](const Affine& map) {
+      if (node.leaf()) {
+        for (int c = 0; c < 3; ++c) box.extend(map(m.V.row(m.F(node.triangle, c))));
+      } else {
+        const Eigen::Vector3d center = map(node.center), reach = map.L.cwiseAbs() * node.half;
+        box.extend(center - reach);
+        box.extend(center + reach);
+      }
+    };
+    const auto at = [&](double t) {
+      const int s = std::clamp(static_cast<int>(std::upper_bound(line.times.begin(), line.times.end(), t) - line.times.begin()) - 1,
+                               0, static_cast<int>(line.times.size()) - 2);
+      const double mu = std::clamp((t - line.times[s]) / (line.times[s + 1] - line.times[s]), 0.0, 1.0);
+      const Affine& p0 = line.maps[side][s];
+      const Affine& p1 = line.maps[side][s + 1];
+      return Affine{(1 - mu) * p0.L + mu * p1.L, (1 - mu) * p0.x + mu * p1.x};
+    };
+    extend(at(t0));
+    extend(at(t1));
+    for (std::size_t k = 0; k < line.times.size(); ++k)
+      if (line.times[k] > t0 && line.times[k] < t1) extend(line.maps[side][k]);
+    return inflated(box, pad + deviation);
+  }
+
+  double gap(int pair) const { return group_gap(options, tree(pair, 0), tree(pair, 1)); }
+
+  MovingTriangle corners(int pair, int side, int triangle, int s) const {
+    const geometry::Mesh& m = mesh(pair, side);
+    const Affine& map = lines[pair].maps[side][s];
+    return {map(m.V.row(m.F(triangle, 0))), map(m.V.row(m.F(triangle, 1))), map(m.V.row(m.F(triangle, 2)))};
+  }
+};
+
+double spatial_extent(const auto& dop) {
+  return std::max({dop.hi[0] - dop.lo[0], dop.hi[1] - dop.lo[1], dop.hi[2] - dop.lo[2]});
+}
+
+Eigen::AlignedBox3d triangle_box_at(const MovingTriangle& p0, const MovingTriangle& p1, double mu0, double mu1) {
+  Eigen::AlignedBox3d box;
+  for (int c = 0; c < 3; ++c)
+    for (double mu : {mu0, mu1}) box.extend((1 - mu) * p0[c] + mu * p1[c]);
+  return box;
+}
+
+/// Where two boxes swept by triangles that intersect meet: their intersection, which
+/// rounding can leave empty by less than `pad`.
+Eigen::AlignedBox3d meeting_box(const Eigen::AlignedBox3d& a, const Eigen::AlignedBox3d& b, double pad) {
+  const Eigen::AlignedBox3d both = a.intersection(b);
+  if (!both.isEmpty()) return both;
+  const Eigen::AlignedBox3d padded = inflated(a, pad).intersection(inflated(b, pad));
+  return padded.isEmpty() ? a.merged(b) : padded;
+}
+
+/// The pieces k (bit k) of `kCullPieces` equal pieces of a time step where the spacetime
+/// k-DOPs of two moving triangles, A's grown by `reach`, meet: the hull of a triangle's sweep
+/// over a whole step is much looser when it moves further than its size. Axis projections
+/// of a vertex are affine in time, so they are interpolated from those at the step's ends;
+/// the time component of an axis is the same for both triangles over a piece, so only the
+/// spatial part matters.
+constexpr int kCullPieces = 8;
+
+template <DopFamily family>
+unsigned meeting_pieces(const MovingTriangle& a0, const MovingTriangle& a1, const MovingTriangle& b0,
+                        const MovingTriangle& b1, double reach) {
+  constexpr int K = Kdop<family>::kAxes;
+  const auto& axes = dop_axes<family>();
+  unsigned meeting = (1u << kCullPieces) - 1;
+  for (int j = 0; j < K && meeting != 0; ++j) {
+    const Eigen::Vector3d axis = axes[j].template head<3>();
+    const double grow = reach * axis.norm();
+    double pa[2][3], pb[2][3];
+    for (int c = 0; c < 3; ++c) {
+      pa[0][c] = axis.dot(a0[c]), pa[1][c] = axis.dot(a1[c]);
+      pb[0][c] = axis.dot(b0[c]), pb[1][c] = axis.dot(b1[c]);
+    }
+    // Range of each triangle's projection at each piece boundary; a piece's range spans its two ends.
+    double lo_a[kCullPieces + 1], hi_a[kCullPieces + 1], lo_b[kCullPieces + 1], hi_b[kCullPieces + 1];
+    for (int k = 0; k <= kCullPieces; ++k) {
+      const double mu = static_cast<double>(k) / kCullPieces;
+      lo_a[k] = lo_b[k] = HUGE_VAL;
+      hi_a[k] = hi_b[k] = -HUGE_VAL;
+      for (int c = 0; c < 3; ++c) {
+        const double va = (1 - mu) * pa[0][c] + mu * pa[1][c], vb = (1 - mu) * pb[0][c] + mu * pb[1][c];
+        lo_a[k] = std::min(lo_a[k], va), hi_a[k] = std::max(hi_a[k], va);
+        lo_b[k] = std::min(lo_b[k], vb), hi_b[k] = std::max(hi_b[k], vb);
+      }
+    }
+    for (int k = 0; k < kCullPieces; ++k) {
+      if (!(meeting & (1u << k))) continue;
+      const double a_lo = std::min(lo_a[k], lo_a[k + 1]) - grow, a_hi = std::max(hi_a[k], hi_a[k + 1]) + grow;
+      const double b_lo = std::min(lo_b[k], lo_b[k + 1]), b_hi = std::max(hi_b[k], hi_b[k + 1]);
+      if (a_lo > b_hi || b_lo > a_hi) meeting &= ~(1u << k);
+    }
+  }
+  return meeting;
+}
+
+/// Two leaves over at most this many steps are bounded step by step.
+constexpr int kStepwiseLeafSteps = 8;
+
+/// The spatial box of a k-DOP: its first three axes are x, y and z in every family.
+template <DopFamily family>
+Eigen::AlignedBox3d spatial_box(const Kdop<family>& dop) {
+  return {Eigen::Vector3d(dop.lo[0], dop.lo[1], dop.lo[2]), Eigen::Vector3d(dop.hi[0], dop.hi[1], dop.hi[2])};
+}
+
+/// A contact and the pair timeline it was found on.
+struct LineContact {
+  int line = 0;
+  TriangleContact contact;
+};
+
+/// What one work item reads of the contacts found so far, and where its own contacts go.
+/// Pruning relies only on the groups of contacts found in the same proxy step, so that what a
+/// step finds stands on its own (an update drops and re-finds whole steps).
+struct ItemContext {
+  /// The groups found so far in one step of a pair timeline, or null if none.
+  std::function<const StepGroups*(int line, int step)> step_groups;
+  std::vector<LineContact>& contacts;  ///< contacts the item finds, clipped to frames
+  DetectionStats& stats;
+};
+
+/// The frame a contact clipped to frames lies in.
+int frame_of_contact(const FrameGrid& grid, const TriangleContact& c) { return grid.frame_of((c.t0 + c.t1) / 2); }
+
+/// The frames an item may report contacts in: those its time range overlaps for a positive
+/// time (an instant contact at its start on a frame boundary belongs to the frame on the left,
+/// where the previous step reports it).
+template <DopFamily family>
+std::pair<int, int> item_frames(const Traversal<family>& tr, const WorkItem& item) {
+  const PairTimeline& line = tr.lines[item.pair];
+  return tr.grid.frames_overlapping(line.times[item.s0], line.times[item.s1]);
+}
+
+/// Whether every contact the item could find would fall inside a group of its step (for an
+/// item over one step), or there is none to find: in each frame k, within the item's time
+/// range clipped to the frame, [t0, t1], and within `box_between(t0, t1)`, the box where the
+/// item's contacts over that time can lie (empty if the two nodes cannot meet then).
+template <DopFamily family>
+bool covered(const Traversal<family>& tr, const WorkItem& item, const ItemContext& context, const auto& box_between) {
+  if (tr.options.all_contacts) return false;
+  const PairTimeline& line = tr.lines[item.pair];
+  const auto [first, last] = item_frames(tr, item);
+  const auto window = [&](int k) {
+    return std::pair{std::max(line.times[item.s0], tr.grid.lo(k)), std::min(line.times[item.s1], tr.grid.hi(k))};
+  };
+  const StepGroups* groups = item.s1 - item.s0 == 1 ? context.step_groups(item.pair, item.s0) : nullptr;
+  for (int k = first; k <= last; ++k) {  // the cheap test first: are the times covered at all?
+    const auto [t0, t1] = window(k);
+    if (groups && (*groups)[k - first].covers_time(t0, t1)) continue;
+    if (!box_between(t0, t1).isEmpty()) return false;
+  }
+  for (int k = first; k <= last; ++k) {
+    const auto [t0, t1] = window(k);
+    const Eigen::AlignedBox3d box = box_between(t0, t1);
+    if (!box.isEmpty() && !(groups && (*groups)[k - first].covers(t0, t1, box))) return false;
+  }
+  return true;
+}
+
+/// Processes one work item: prunes it, splits it into `next`, or runs the narrow phase.
+template <DopFamily family>
+void process(const Traversal<family>& tr, const WorkItem& item, std::vector<WorkItem>& next, const ItemContext& context) {
+  DetectionStats& stats = context.stats;
+  const PairTimeline& line = tr.lines[item.pair];
+  const BodyTree::Node& na = tr.tree(item.pair, 0).node(item.node_a);
+  const BodyTree::Node& nb = tr.tree(item.pair, 1).node(item.node_b);
+  const bool single_step = item.s1 - item.s0 == 1;
+  const double deviation_a = tr.options.conservative ? tr.proxies[line.a].deviation : 0.0;
+  const double deviation_b = tr.options.conservative ? tr.proxies[line.b].deviation : 0.0;
+  Kdop<family> da, db;
+  if (!(na.leaf() && nb.leaf() && single_step)) {  // that case is culled by `meeting_pieces`, tighter
+    ++stats.bound_tests;
+    da = tr.bound(item.pair, 0, item.node_a, item.s0, item.s1);
+    db = tr.bound(item.pair, 1, item.node_b, item.s0, item.s1);
+    if (!da.overlaps(db)) return;
+    const auto box_between = [&](double t0, double t1) {
+      if (t0 <= line.times[item.s0] && t1 >= line.times[item.s1]) return spatial_box(da).intersection(spatial_box(db));
+      return tr.box_between(item.pair, 0, item.node_a, t0, t1, deviation_a)
+          .intersection(tr.box_between(item.pair, 1, item.node_b, t0, t1, deviation_b));
+    };
+    if (covered(tr, item, context, box_between)) {
+      ++stats.pruned;
+      return;
+    }
+  }
+  const auto push = [&](int node_a, int node_b, int s0, int s1) { next.push_back({item.pair, node_a, node_b, s0, s1}); };
+  const auto split_time = [&] {
+    const int middle = (item.s0 + item.s1) / 2;
+    push(item.node_a, item.node_b, item.s0, middle);
+    push(item.node_a, item.node_b, middle, item.s1);
+  };
+  if (na.leaf() && nb.leaf()) {
+    // The narrow phase of the two triangles over samples [s0, s1]: one step, or a range over
+    // which both hold still.
+    const auto leaves = [&](int s0, int s1) {
+      const double t0 = line.times[s0], t1 = line.times[s1];
+      const auto [first_frame, last_frame] = tr.grid.frames_overlapping(t0, t1);
+      const auto time_at = [&](double mu) { return mu == 0 ? t0 : mu == 1 ? t1 : t0 + mu * (t1 - t0); };
+      const auto mu_at = [&](double t) { return (t - t0) / (t1 - t0); };
+      // Reports the contact over step parameters [mu0, mu1] clipped to each of the item's frames.
+      const auto emit = [&](const MovingTriangle& a0, const MovingTriangle& a1, const MovingTriangle& b0,
+                            const MovingTriangle& b1, double mu0, double mu1, bool possible) {
+        const auto report = [&](double lo, double hi, double mu_lo, double mu_hi) {
+          Eigen::AlignedBox3d box_a = triangle_box_at(a0, a1, mu_lo, mu_hi);
+          Eigen::AlignedBox3d box_b = triangle_box_at(b0, b1, mu_lo, mu_hi);
+          if (possible) {
+            // Where the true motions may meet within this frame's part of the piece: nowhere
+            // if the grown boxes miss each other there.
+            box_a = inflated(box_a, deviation_a + tr.pad).intersection(inflated(box_b, deviation_b + tr.pad));
+            if (box_a.isEmpty()) return;
+            box_b = box_a;
+          }
+          context.contacts.push_back({item.pair,
+                                      {line.a, na.triangle, line.b, nb.triangle, lo, hi, meeting_box(box_a, box_b, tr.pad),
+                                       possible, t0, t1}});
+        };
+        const double ta = time_at(mu0), tb = time_at(mu1);
+        if (ta == tb) {
+          const int k = tr.grid.frame_of(ta);
+          if (k >= first_frame && k <= last_frame) report(ta, ta, mu0, mu0);
+          return;
+        }
+        const auto [f0, f1] = tr.grid.frames_overlapping(ta, tb);
+        for (int k = std::max(f0, first_frame); k <= std::min(f1, last_frame); ++k) {
+          const bool clip_lo = tr.grid.lo(k) > ta, clip_hi = tr.grid.hi(k) < tb;
+          const double lo = clip_lo ? tr.grid.lo(k) : ta, hi = clip_hi ? tr.grid.hi(k) : tb;
+          if (hi > lo) report(lo, hi, clip_lo ? mu_at(lo) : mu0, clip_hi ? mu_at(hi) : mu1);
+        }
+      };
+      if (s1 - s0 == 1) {
+        const MovingTriangle a0 = tr.corners(item.pair, 0, na.triangle, s0);
+        const MovingTriangle a1 = tr.corners(item.pair, 0, na.triangle, s1);
+        const MovingTriangle b0 = tr.corners(item.pair, 1, nb.triangle, s0);
+        const MovingTriangle b1 = tr.corners(item.pair, 1, nb.triangle, s1);
+        const WorkItem step{item.pair, item.node_a, item.node_b, s0, s1};
+        const auto box_between = [&](double ta, double tb) {
+          const double mu0 = ta <= t0 ? 0.0 : mu_at(ta), mu1 = tb >= t1 ? 1.0 : mu_at(tb);
+          return inflated(triangle_box_at(a0, a1, mu0, mu1), deviation_a + tr.pad)
+              .intersection(inflated(triangle_box_at(b0, b1, mu0, mu1), deviation_b + tr.pad));
+        };
+        if (covered(tr, step, context, box_between)) {
+          ++stats.pruned;
+          return;
+        }
+        if (meeting_pieces<family>(a0, a1, b0, b1, deviation_a + deviation_b + 2 * tr.pad) == 0) return;
+        ++stats.narrow_phase;
+        TrianglePairCcdRequest request;
+        request.a_start = a0;
+        request.a_end = a1;
+        request.b_start = b0;
+        request.b_end = b1;
+        request.time_tolerance = 1.0 / 32;  // of the step: pieces with a contact event are reported whole below that
+        request.distance_tolerance = 1e-4;
+        const TrianglePairCcdResult spans = triangle_pair_ccd(request);
+        stats.narrow_pieces += spans.pieces;
+        stats.contact_tests += spans.contact_tests;
+        for (const auto& [mu0, mu1] : spans.intervals) emit(a0, a1, b0, b1, mu0, mu1, false);
+        if (!spans.any() && tr.options.conservative) {
+          // The proxies miss, but the true motions stray up to the deviations from them: report
+          // the sixteenths of the step where the triangles' spacetime k-DOPs, so inflated, meet.
+          const double reach = deviation_a + deviation_b + tr.pad;
+          constexpr int kPieces = 16;
+          for (int k = 0; k < kPieces; ++k) {
+            const double lo = static_cast<double>(k) / kPieces, hi = static_cast<double>(k + 1) / kPieces;
+            Kdop<family> dop_a, dop_b;
+            for (double mu : {lo, hi})
+              for (int c = 0; c < 3; ++c) {
+                dop_a.extend((1 - mu) * a0[c] + mu * a1[c], mu);
+                dop_b.extend((1 - mu) * b0[c] + mu * b1[c], mu);
+              }
+            dop_a.inflate(reach);
+            if (dop_a.overlaps(dop_b)) emit(a0, a1, b0, b1, lo, hi, true);
+          }
+        }
+        return;
+      }
+      if (!line.moving[0] && !line.moving[1]) {  // both hold still: one static test decides
+        ++stats.narrow_phase;
+        const MovingTriangle a = tr.corners(item.pair, 0, na.triangle, s0);
+        const MovingTriangle b = tr.corners(item.pair, 1, nb.triangle, s0);
+        if (geometry::triangles_intersect(a[0], a[1], a[2], b[0], b[1], b[2])) emit(a, a, b, b, 0, 1, false);
+      }
+    };
+    if (single_step || (!line.moving[0] && !line.moving[1])) {
+      leaves(item.s0, item.s1);
+      return;
+    }
+    // Over a few steps, bound each step on its own: halving the range again and again would
+    // bound every half over all its samples. Long ranges are halved first, as a range where the
+    // triangles meet nowhere is then dropped with one test.
+    if (item.s1 - item.s0 > kStepwiseLeafSteps) {
+      split_time();
+      return;
+    }
+    for (int s = item.s0; s < item.s1; ++s) {
+      ++stats.bound_tests;
+      if (tr.bound(item.pair, 0, item.node_a, s, s + 1).overlaps(tr.bound(item.pair, 1, item.node_b, s, s + 1)))
+        leaves(s, s + 1);
+    }
+    return;
+  }
+  // Split the dimension that makes the bounds loose: time when the motion over the range
+  // sweeps further than the nodes are large, else the larger node.
+  const double size_a = 2 * na.half.maxCoeff(), size_b = 2 * nb.half.maxCoeff();
+  const double sweep = std::max(spatial_extent(da) - size_a, spatial_extent(db) - size_b);
+  if (!single_step && sweep > std::min(size_a, size_b)) {
+    split_time();
+  } else if (!na.leaf() && (nb.leaf() || size_a >= size_b)) {
+    push(na.left, item.node_b, item.s0, item.s1);
+    push(na.right, item.node_b, item.s0, item.s1);
+  } else {
+    push(item.node_a, nb.left, item.s0, item.s1);
+    push(item.node_a, nb.right, item.s0, item.s1);
+  }
+}
+
+
+}  // namespace
+
+std::vector<std::pair<double, double>> union_of(std::vector<std::pair<double, double>> ranges) {
+  std::sort(ranges.begin(), ranges.end());
+  std::vector<std::pair<double, double>> merged;
+  for (const auto& r : ranges) {
+    if (!merged.empty() && r.first <= merged.back().second) merged.back().second = std::max(merged.back().second, r.second);
+    else merged.push_back(r);
+  }
+  return merged;
+}
+
+bool contact_less(const TriangleContact& x, const TriangleContact& y) {
+  return std::tie(x.t0, x.part_a, x.part_b, x.triangle_a, x.triangle_b, x.t1) <
+         std::tie(y.t0, y.part_a, y.part_b, y.triangle_a, y.triangle_b, y.t1);
+}
+
+
+namespace {
+
+void add_stats(DetectionStats& into, const DetectionStats& s) {
+  into.bound_tests += s.bound_tests;
+  into.narrow_phase += s.narrow_phase;
+  into.narrow_pieces += s.narrow_pieces;
+  into.contact_tests += s.contact_tests;
+  into.pruned += s.pruned;
+}
+
+/// Steps processed between two progress reports in the depth-first phase.
+constexpr std::size_t kStepsPerBatch = 16;
+
+/// The groups of the contacts found so far, per pair timeline and proxy step: what pruning
+/// relies on.
+template <DopFamily family>
+class FoundSteps {
+ public:
+  explicit FoundSteps(const Traversal<family>& tr) : tr_(tr), groups_(tr.lines.size()) {
+    for (std::size_t i = 0; i < tr.lines.size(); ++i) groups_[i].resize(tr.lines[i].times.size() - 1);
+  }
+
+  /// The groups of a step, or null while it has none.
+  const StepGroups* of(int line, int step) const {
+    const StepGroups& groups = groups_[line][step];
+    return groups.empty() ? nullptr : &groups;
+  }
+
+  /// Adds a contact found on a pair timeline to the groups of its step (contacts over several
+  /// steps, of parts holding still, prune nothing and are left out). Steps are independent:
+  /// contacts of different steps may be added concurrently.
+  void add(int line, const TriangleContact& contact) {
+    const std::vector<double>& times = tr_.lines[line].times;
+    const int step = static_cast<int>(std::lower_bound(times.begin(), times.end(), contact.step_t0) - times.begin());
+    if (step + 1 >= static_cast<int>(times.size()) || times[step + 1] != contact.step_t1) return;
+    const auto [first, last] = tr_.grid.frames_overlapping(times[step], times[step + 1]);
+    StepGroups& groups = groups_[line][step];
+    if (groups.empty()) groups.assign(last - first + 1, FrameContacts(tr_.gap(line)));
+    const int frame = frame_of_contact(tr_.grid, contact);
+    assert(frame >= first && frame <= last);  // a step reports contacts in its own frames only
+    groups[frame - first].add(contact);
+  }
+
+ private:
+  const Traversal<family>& tr_;
+  std::vector<std::vector<StepGroups>> groups_;
+};
+
+template <DopFamily family>
+bool run_traversal(const Traversal<family>& tr, std::vector<TriangleContact>& contacts, DetectionStats& stats,
+                   const DetectCallbacks& callbacks) {
+  FoundSteps<family> found(tr);
+  const auto step_groups = [&](int line, int step) { return found.of(line, step); };
+  std::vector<WorkItem> level;
+  int max_depth = 1, max_steps = 1;
+  for (int i = 0; i < static_cast<int>(tr.lines.size()); ++i) {
+    const int steps = static_cast<int>(tr.lines[i].times.size()) - 1;
+    level.push_back({i, BodyTree::kRoot, BodyTree::kRoot, 0, steps});
+    max_depth = std::max(max_depth, tr.tree(i, 0).depth() + tr.tree(i, 1).depth());
+    max_steps = std::max(max_steps, steps);
+  }
+  const auto contact_ranges = [&] {
+    std::vector<std::pair<double, double>> ranges;
+    for (const TriangleContact& c : contacts) ranges.push_back({c.t0, c.t1});
+    return ranges;
+  };
+
+  // Breadth first: coarse time extents level by level.
+  const double expected_levels = max_depth + std::ceil(std::log2(max_steps)) + 1;
+  int depth = 0;
+  while (!level.empty() && level.size() < tr.options.breadth_first_items) {
+    ++depth;
+    tbb::combinable<std::vector<WorkItem>> next_parts;
+    tbb::combinable<std::vector<LineContact>> found_parts;
+    tbb::combinable<DetectionStats> stat_parts;
+    const auto run = [&](std::size_t begin, std::size_t end) {
+      auto& next = next_parts.local();
+      const ItemContext context{step_groups, found_parts.local(), stat_parts.local()};
+      for (std::size_t i = begin; i < end; ++i) process(tr, level[i], next, context);
+    };
+    if (level.size() < 512) run(0, level.size());
+    else
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, level.size(), 256),
+                        [&](const tbb::blocked_range<std::size_t>& r) { run(r.begin(), r.end()); });
+    std::vector<WorkItem> next;
+    next_parts.combine_each([&](const std::vector<WorkItem>& part) { next.insert(next.end(), part.begin(), part.end()); });
+    std::vector<LineContact> batch;
+    found_parts.combine_each([&](const std::vector<LineContact>& part) { batch.insert(batch.end(), part.begin(), part.end()); });
+    // In an order that does not depend on the threads.
+    std::sort(batch.begin(), batch.end(), [](const LineContact& x, const LineContact& y) {
+      return contact_less(x.contact, y.contact) || (!contact_less(y.contact, x.contact) && x.line < y.line);
+    });
+    for (const LineContact& c : batch) {
+      found.add(c.line, c.contact);
+      contacts.push_back(c.contact);
+    }
+    stat_parts.combine_each([&](const DetectionStats& s) { add_stats(stats, s); });
+    stats.levels = depth;
+    if (callbacks.preview) {
+      std::vector<std::pair<double, double>> ranges = contact_ranges();
+      for (const WorkItem& item : next) ranges.push_back({tr.lines[item.pair].times[item.s0], tr.lines[item.pair].times[item.s1]});
+      callbacks.preview({depth, union_of(std::move(ranges))});
+    }
+    if (!report_progress(callbacks.progress, std::min(0.5, 0.5 * depth / expected_levels))) return false;
+    std::sort(next.begin(), next.end(), [](const WorkItem& x, const WorkItem& y) {
+      return std::tie(x.pair, x.s0, x.node_a, x.node_b, x.s1) < std::tie(y.pair, y.s0, y.node_a, y.node_b, y.s1);
+    });
+    level = std::move(next);
+  }
+  if (!level.empty()) {
+    // Depth first, one step of one pair timeline at a time (the steps in parallel): contacts
+    // found grow the groups of the step's frames at once, and what they cover is skipped.
+    std::vector<WorkItem> items;
+    for (const WorkItem& item : level)
+      for (int s = item.s0; s < item.s1; ++s) items.push_back({item.pair, item.node_a, item.node_b, s, s + 1});
+    std::sort(items.begin(), items.end(), [](const WorkItem& x, const WorkItem& y) {
+      return std::tie(x.pair, x.s0, x.node_a, x.node_b) < std::tie(y.pair, y.s0, y.node_a, y.node_b);
+    });
+    std::vector<std::pair<std::size_t, std::size_t>> steps;  // runs of items of one step
+    for (std::size_t i = 0; i < items.size(); ++i)
+      if (i == 0 || items[i].pair != items[i - 1].pair || items[i].s0 != items[i - 1].s0) steps.push_back({i, i + 1});
+      else steps.back().second = i + 1;
+    for (std::size_t first = 0; first < steps.size(); first += kStepsPerBatch) {
+      const std::size_t end = std::min(steps.size(), first + kStepsPerBatch);
+      std::vector<std::vector<LineContact>> batch_contacts(end - first);
+      std::vector<DetectionStats> batch_stats(end - first);
+      tbb::parallel_for(first, end, [&](std::size_t g) {
+        std::vector<LineContact>& local = batch_contacts[g - first];
+        const ItemContext context{step_groups, local, batch_stats[g - first]};
+        // Depth first from `stack` until a contact is found, or until it is empty.
+        std::vector<WorkItem> children;
+        const auto probe = [&](std::vector<WorkItem>& stack) {
+          while (!stack.empty()) {
+            const WorkItem item = stack.back();
+            stack.pop_back();
+            const std::size_t known = local.size();
+            process(tr, item, children, context);
+            for (std::size_t c = known; c < local.size(); ++c) found.add(local[c].line, local[c].contact);
+            stack.insert(stack.end(), children.rbegin(), children.rend());
+            children.clear();
+            if (local.size() > known) return;
+          }
+        };
+        // Probe every subtree until it yields its first contact, in breadth-first order of the
+        // probes: what a probe leaves (the siblings on its way down) is probed later, so the
+        // contacts found early lie all over the region and the groups' boxes are nearly whole
+        // before most of the work is looked at.
+        std::deque<WorkItem> queue(items.begin() + static_cast<std::ptrdiff_t>(steps[g].first),
+                                   items.begin() + static_cast<std::ptrdiff_t>(steps[g].second));
+        std::vector<WorkItem> stack;
+        while (!queue.empty()) {
+          stack.assign(1, queue.front());
+          queue.pop_front();
+          probe(stack);
+          queue.insert(queue.end(), stack.begin(), stack.end());
+        }
+      });
+      for (std::size_t g = first; g < end; ++g) {
+        for (const LineContact& c : batch_contacts[g - first]) contacts.push_back(c.contact);
+        add_stats(stats, batch_stats[g - first]);
+      }
+      if (callbacks.preview) {
+        std::vector<std::pair<double, double>> ranges = contact_ranges();
+        for (std::size_t g = end; g < steps.size(); ++g) {
+          const WorkItem& item = items[steps[g].first];
+          ranges.push_back({tr.lines[item.pair].times[item.s0], tr.lines[item.pair].times[item.s1]});
+        }
+        callbacks.preview({depth, union_of(std::move(ranges))});
+      }
+      if (!report_progress(callbacks.progress, 0.5 + 0.5 * static_cast<double>(end) / steps.size())) return false;
+    }
+  }
+  std::sort(contacts.begin(), contacts.end(), contact_less);
+  return true;
+}
+
+}  // namespace
+
+bool traverse_ranges(const scene::Reconfigurable& scene, const BodyTrees& trees, const std::vector<PartProxy>& proxies,
+                     const DetectorOptions& options, const std::vector<TraversalRange>& ranges,
+                     std::vector<TriangleContact>& contacts, DetectionStats& stats, const DetectCallbacks& callbacks) {
+  std::vector<PairTimeline> lines;
+  for (const TraversalRange& r : ranges) lines.push_back(make_timeline(proxies, r.a, r.b, r.t0, r.t1));
+  bool finished = false;
+  const auto run = [&]<DopFamily family>() {
+    const Traversal<family> traversal(scene, trees, proxies, options, std::move(lines));
+    finished = run_traversal(traversal, contacts, stats, callbacks);
+  };
+  switch (options.dop) {
+    case DopFamily::k8: run.template operator()<DopFamily::k8>(); break;
+    case DopFamily::k28: run.template operator()<DopFamily::k28>(); break;
+    case DopFamily::k80: run.template operator()<DopFamily::k80>(); break;
+  }
+  return finished;
+}
+
+std::vector<CollisionInterval> group_contacts(const std::vector<TriangleContact>& contacts,
+                                              const DetectorOptions& options, const BodyTrees& trees) {
+  const FrameGrid grid(options.frame);
+  std::map<std::tuple<int, int, int>, FrameContacts> frames;  // by parts and frame
+  for (const TriangleContact& c : contacts) {
+    const auto key = std::tuple{c.part_a, c.part_b, frame_of_contact(grid, c)};
+    auto at = frames.find(key);
+    if (at == frames.end())
+      at = frames.emplace(key, FrameContacts(group_gap(options, *trees[c.part_a], *trees[c.part_b]))).first;
+    at->second.add(c);
+  }
+  std::vector<CollisionInterval> groups;
+  for (const auto& [key, frame] : frames) groups.insert(groups.end(), frame.groups().begin(), frame.groups().end());
+  std::sort(groups.begin(), groups.end(), [](const CollisionInterval& x, const CollisionInterval& y) {
+    return std::tie(x.t0, x.parts, x.t1) < std::tie(y.t0, y.parts, y.t1);
+  });
+  return groups;
+}
+
+Eigen::MatrixX3d proxy_vertices(const scene::Reconfigurable& scene, const PartProxy& proxy, int part, double t) {
+  const Affine m = proxy_map(proxy, t);
+  return (scene.parts[part].mesh.V * m.L.transpose()).rowwise() + m.x.transpose();
+}
+
+
+}  // namespace reconfig::collision::detail

@@ -1,0 +1,42 @@
+#pragma once
+/// @file
+/// The traversal behind `SpacetimeDetector`: pairs of parts over time ranges, their 4D k-DOP
+/// hierarchies walked breadth first then depth first per proxy step, the narrow phase at the
+/// leaves, and the grouping of the contacts found per pair of parts and frame.
+
+#include <utility>
+#include <vector>
+
+#include "reconfig/collision/collision_interval.h"
+#include "reconfig/collision/spacetime_detector.h"
+
+namespace reconfig::collision::detail {
+
+/// One pair of parts (a < b) to traverse over [t0, t1] (proxy sample times, or 0 and 1, so
+/// that the steps are those of the whole transition).
+struct TraversalRange {
+  int a = 0, b = 0;
+  double t0 = 0, t1 = 1;
+};
+
+/// Finds the contacts of every range, sorted by `contact_less`, adding to `stats`.
+/// @return false if cancelled through `callbacks.progress`
+bool traverse_ranges(const scene::Reconfigurable& scene, const BodyTrees& trees, const std::vector<PartProxy>& proxies,
+                     const DetectorOptions& options, const std::vector<TraversalRange>& ranges,
+                     std::vector<TriangleContact>& contacts, DetectionStats& stats, const DetectCallbacks& callbacks);
+
+/// The groups of every pair of parts and frame: the contacts that meet (in time, and in space
+/// within the options' `group_gap`) merged to the fixpoint, sorted by (t0, parts, t1).
+std::vector<CollisionInterval> group_contacts(const std::vector<TriangleContact>& contacts,
+                                              const DetectorOptions& options, const BodyTrees& trees);
+
+/// The order of contacts: (t0, parts, triangles, t1).
+bool contact_less(const TriangleContact& x, const TriangleContact& y);
+
+/// Sorted, disjoint union of time ranges.
+std::vector<std::pair<double, double>> union_of(std::vector<std::pair<double, double>> ranges);
+
+/// The posed (proxy) vertices of a part at time t.
+Eigen::MatrixX3d proxy_vertices(const scene::Reconfigurable& scene, const PartProxy& proxy, int part, double t);
+
+}  // namespace reconfig::collision::detail
