@@ -109,11 +109,14 @@ TEST(CollisionService, RapidEditsEndInTheSameResultAsAFreshDetection) {
   EXPECT_EQ(snapshot->version, last);
   SpacetimeDetector fresh(0, {});
   ASSERT_TRUE(fresh.detect(scene, build_body_trees(scene)));
-  const auto expected = consolidate(fresh.contacts(), fresh.containments());
+  const auto expected = consolidate(fresh.groups(), fresh.containments());
   ASSERT_EQ(snapshot->transitions[0].intervals.size(), expected.size());
   for (std::size_t i = 0; i < expected.size(); ++i) {
     EXPECT_EQ(snapshot->transitions[0].intervals[i].t0, expected[i].t0);
     EXPECT_EQ(snapshot->transitions[0].intervals[i].t1, expected[i].t1);
+    EXPECT_EQ(snapshot->transitions[0].intervals[i].box.min(), expected[i].box.min());
+    EXPECT_EQ(snapshot->transitions[0].intervals[i].box.max(), expected[i].box.max());
+    EXPECT_EQ(snapshot->transitions[0].intervals[i].parts, expected[i].parts);
   }
 }
 

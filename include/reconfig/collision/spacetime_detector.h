@@ -66,7 +66,7 @@ struct DetectionStats {
   long narrow_pieces = 0;   ///< time pieces the narrow phase examined
   long contact_tests = 0;   ///< vertex–face and edge–edge tests the narrow phase ran
   long containment_tests = 0;
-  long pruned = 0;          ///< work skipped because a frame's groups already covered it
+  long pruned = 0;          ///< work skipped: its contacts would fall inside groups found already, or its nodes meet in no frame
   int levels = 0;           ///< breadth-first levels processed
   long proxy_samples = 0;   ///< time samples over all parts' proxies
 };

@@ -15,7 +15,7 @@ namespace reconfig::collision::detail {
 class FrameContacts {
  public:
   /// @param gap  boxes closer than this (on every axis) count as meeting
-  explicit FrameContacts(double gap = 0) : gap_(gap) {}
+  explicit FrameContacts(double gap) : gap_(gap) {}
 
   /// Merges a contact of this pair of parts within this frame.
   void add(const TriangleContact& contact);
