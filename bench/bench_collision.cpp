@@ -196,6 +196,8 @@ void BM_UpdateAfterKeyEdit(benchmark::State& state) {
   }
   describe(state, f);
   state.counters["contacts"] = static_cast<double>(detector.contacts().size());
+  state.counters["bound_tests"] = static_cast<double>(detector.last_stats().bound_tests);  // of the last update
+  state.counters["narrow_phase"] = static_cast<double>(detector.last_stats().narrow_phase);
 }
 BENCHMARK(BM_UpdateAfterKeyEdit)
     ->ArgsProduct({{kElephant, kBunnyArmadillo, kEight, kKitchenHasty, kKitchen}})

@@ -7,6 +7,7 @@
 #include "reconfig/collision/consolidate.h"
 #include "reconfig/collision/reference_check.h"
 #include "reconfig/collision/triangle_pair_ccd.h"
+#include "reconfig/geometry/primitives.h"
 #include "reconfig/scene/edits.h"
 #include "reconfig/scene/history.h"
 #include "support/random_scene.h"
@@ -275,6 +276,55 @@ TEST(SpacetimeDetector, StoppingEarlyGivesTheGroupsOfAllContacts) {
     }
   EXPECT_GT(pruned, 0);
   EXPECT_LT(contacts, all / 2) << "stopping early should find far fewer contacts";
+}
+
+/// A plank (2 m) drops through two posts 1.6 m apart that are one part: the two places where
+/// it crosses them stay two intervals (they lie further apart than the grouping gap), each
+/// with the box of its own crossing; posts 0.2 m apart (0.1 m between them, under 20 % of the
+/// posts' size) make one interval.
+TEST(SpacetimeDetector, SeparatePlacesOfOnePairStaySeparate) {
+  for (const double apart : {1.6, 0.2}) {
+    scene::Reconfigurable scene;
+    scene::Part plank;
+    plank.name = "plank";
+    plank.source = scene::EditedMesh{};
+    plank.mesh = geometry::make_box(Eigen::Vector3d(2.0, 0.1, 0.1));
+    plank.center = scene::part_center(plank.mesh);
+    scene::Part posts;
+    posts.name = "posts";
+    posts.source = scene::EditedMesh{};
+    const geometry::Mesh post = geometry::make_box(Eigen::Vector3d(0.1, 0.1, 0.6));
+    posts.mesh.V.resize(2 * post.V.rows(), 3);
+    posts.mesh.F.resize(2 * post.F.rows(), 3);
+    posts.mesh.V << post.V.rowwise() - Eigen::RowVector3d(apart / 2, 0, 0), post.V.rowwise() + Eigen::RowVector3d(apart / 2, 0, 0);
+    posts.mesh.F << post.F, post.F.array() + static_cast<int>(post.V.rows());
+    posts.center = scene::part_center(posts.mesh);
+    scene.parts = {plank, posts};
+    const Eigen::Vector3d high(0, 0, 1), low(0, 0, -1);
+    const Eigen::Quaterniond still = Eigen::Quaterniond::Identity();
+    scene.states = {{"start", {{"plank", {still, high}}, {"posts", {still, Eigen::Vector3d::Zero()}}}},
+                    {"end", {{"plank", {still, low}}, {"posts", {still, Eigen::Vector3d::Zero()}}}}};
+    scene::KeyframedTrack track;
+    track.translation = {{0.0, high, high, high + (low - high) / 3}, {1.0, low, low + (high - low) / 3, low}};
+    track.rotation = {{0.0, still}, {1.0, still}};
+    scene.transitions = {{"drop", "start", "end", true, {{"plank", track}}}};
+
+    const Detected found = detect(scene, {});
+    if (apart > 1) {
+      ASSERT_EQ(found.intervals.size(), 2u);
+      for (const CollisionInterval& ci : found.intervals) {
+        EXPECT_NEAR(std::abs(ci.box.center().x()), apart / 2, 0.01);
+        EXPECT_LE(ci.box.sizes().x(), 0.1 + 1e-6);  // the post's width: where the surfaces cross
+        // From when the plank's bottom reaches the posts' tops (z = 0.3) to when its top leaves
+        // their bottoms (z = −0.3); it drops at a steady 2 m per unit of time.
+        EXPECT_NEAR(ci.t0, 0.325, 0.01);
+        EXPECT_NEAR(ci.t1, 0.675, 0.01);
+      }
+    } else {
+      ASSERT_EQ(found.intervals.size(), 1u);
+      EXPECT_NEAR(found.intervals[0].box.sizes().x(), apart + 0.1, 1e-6);
+    }
+  }
 }
 
 TEST(SpacetimeDetector, ProxiesStayWithinTolerance) {

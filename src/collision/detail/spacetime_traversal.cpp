@@ -222,14 +222,6 @@ Eigen::AlignedBox3d triangle_box_at(const MovingTriangle& p0, const MovingTriang
   return box;
 }
 
-/// Where two boxes swept by triangles that intersect meet: their intersection, which
-/// rounding can leave empty by less than `pad`.
-Eigen::AlignedBox3d meeting_box(const Eigen::AlignedBox3d& a, const Eigen::AlignedBox3d& b, double pad) {
-  const Eigen::AlignedBox3d both = a.intersection(b);
-  if (!both.isEmpty()) return both;
-  const Eigen::AlignedBox3d padded = inflated(a, pad).intersection(inflated(b, pad));
-  return padded.isEmpty() ? a.merged(b) : padded;
-}
 
 /// The pieces k (bit k) of `kCullPieces` equal pieces of a time step where the spacetime
 /// k-DOPs of two moving triangles, A's grown by `reach`, meet: the hull of a triangle's sweep
@@ -382,18 +374,17 @@ void process(const Traversal<family>& tr, const WorkItem& item, std::vector<Work
       const auto emit = [&](const MovingTriangle& a0, const MovingTriangle& a1, const MovingTriangle& b0,
                             const MovingTriangle& b1, double mu0, double mu1, bool possible) {
         const auto report = [&](double lo, double hi, double mu_lo, double mu_hi) {
-          Eigen::AlignedBox3d box_a = triangle_box_at(a0, a1, mu_lo, mu_hi);
-          Eigen::AlignedBox3d box_b = triangle_box_at(b0, b1, mu_lo, mu_hi);
-          if (possible) {
-            // Where the true motions may meet within this frame's part of the piece: nowhere
-            // if the grown boxes miss each other there.
-            box_a = inflated(box_a, deviation_a + tr.pad).intersection(inflated(box_b, deviation_b + tr.pad));
-            if (box_a.isEmpty()) return;
-            box_b = box_a;
-          }
-          context.contacts.push_back({item.pair,
-                                      {line.a, na.triangle, line.b, nb.triangle, lo, hi, meeting_box(box_a, box_b, tr.pad),
-                                       possible, t0, t1}});
+          // Where the triangles (or, for a possible contact, the true motions within the
+          // deviations) may meet during [lo, hi]; nowhere if the boxes miss each other there,
+          // which happens where a span the narrow phase reports whole is clipped to a frame.
+          // The padding absorbs the rounding of the boxes.
+          const double grow_a = (possible ? deviation_a : 0.0) + tr.pad, grow_b = (possible ? deviation_b : 0.0) + tr.pad;
+          const Eigen::AlignedBox3d box_a = triangle_box_at(a0, a1, mu_lo, mu_hi);
+          const Eigen::AlignedBox3d box_b = triangle_box_at(b0, b1, mu_lo, mu_hi);
+          Eigen::AlignedBox3d box = possible ? Eigen::AlignedBox3d() : box_a.intersection(box_b);
+          if (box.isEmpty()) box = inflated(box_a, grow_a).intersection(inflated(box_b, grow_b));
+          if (box.isEmpty()) return;
+          context.contacts.push_back({item.pair, {line.a, na.triangle, line.b, nb.triangle, lo, hi, box, possible, t0, t1}});
         };
         const double ta = time_at(mu0), tb = time_at(mu1);
         if (ta == tb) {
