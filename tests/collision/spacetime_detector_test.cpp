@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <random>
+#include <sstream>
 
 #include "reconfig/collision/consolidate.h"
 #include "reconfig/collision/reference_check.h"
@@ -310,6 +311,10 @@ TEST(SpacetimeDetector, SeparatePlacesOfOnePairStaySeparate) {
     scene.transitions = {{"drop", "start", "end", true, {{"plank", track}}}};
 
     const Detected found = detect(scene, {});
+    std::ostringstream listing;
+    for (const CollisionInterval& ci : found.intervals)
+      listing << "[" << ci.t0 << ", " << ci.t1 << "] " << ci.box.min().transpose() << " / " << ci.box.max().transpose() << "\n";
+    SCOPED_TRACE(listing.str());
     if (apart > 1) {
       ASSERT_EQ(found.intervals.size(), 2u);
       for (const CollisionInterval& ci : found.intervals) {
