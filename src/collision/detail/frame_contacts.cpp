@@ -1,5 +1,7 @@
 #include "collision/detail/frame_contacts.h"
 
+#include <algorithm>
+
 #include "collision/detail/interval_merging.h"
 #include "reconfig/collision/consolidate.h"
 
@@ -11,7 +13,7 @@ void FrameContacts::add(const TriangleContact& contact) {
   for (bool merged = true; merged;) {
     merged = false;
     for (std::size_t g = 0; g < groups_.size(); ++g)
-      if (times_meet(groups_[g], grown) && boxes_meet(groups_[g].box, grown.box, gap_)) {
+      if (intervals_meet(groups_[g], grown, gap_)) {
         absorb(grown, groups_[g]);
         groups_.erase(groups_.begin() + static_cast<std::ptrdiff_t>(g));
         merged = true;
@@ -22,15 +24,9 @@ void FrameContacts::add(const TriangleContact& contact) {
 }
 
 bool FrameContacts::covers(double t0, double t1, const Eigen::AlignedBox3d& box) const {
-  for (const CollisionInterval& group : groups_)
-    if (!group.possible && group.t0 <= t0 && t1 <= group.t1 && group.box.contains(box)) return true;
-  return false;
-}
-
-bool FrameContacts::covers_time(double t0, double t1) const {
-  for (const CollisionInterval& group : groups_)
-    if (!group.possible && group.t0 <= t0 && t1 <= group.t1) return true;
-  return false;
+  return std::any_of(groups_.begin(), groups_.end(), [&](const CollisionInterval& g) {
+    return !g.possible && g.t0 <= t0 && t1 <= g.t1 && g.box.contains(box);
+  });
 }
 
 }  // namespace reconfig::collision::detail

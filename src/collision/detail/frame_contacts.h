@@ -24,9 +24,6 @@ class FrameContacts {
   /// the box: then any contact within them merges into that group and changes nothing.
   bool covers(double t0, double t1, const Eigen::AlignedBox3d& box) const;
 
-  /// Whether some confirmed group's time extent contains [t0, t1] (`covers` without the box).
-  bool covers_time(double t0, double t1) const;
-
   const std::vector<CollisionInterval>& groups() const { return groups_; }
 
  private:

@@ -20,9 +20,9 @@ inline bool times_meet(const CollisionInterval& a, const CollisionInterval& b) {
   return a.t0 <= b.t1 + kAdjacent && b.t0 <= a.t1 + kAdjacent;
 }
 
-/// Two intervals merge when they meet both in time and in space.
-inline bool intervals_meet(const CollisionInterval& a, const CollisionInterval& b) {
-  return times_meet(a, b) && boxes_meet(a.box, b.box);
+/// Two intervals merge when they meet both in time and in space (their boxes within `gap`).
+inline bool intervals_meet(const CollisionInterval& a, const CollisionInterval& b, double gap = 0) {
+  return times_meet(a, b) && boxes_meet(a.box, b.box, gap);
 }
 
 inline void add_part(std::vector<int>& parts, int part) {

@@ -36,15 +36,17 @@ struct Affine {
   bool operator==(const Affine& o) const { return L == o.L && x == o.x; }
 };
 
+/// The map a fraction s ∈ [0, 1] of the way from p0 to p1.
+Affine between(const Affine& p0, const Affine& p1, double s) { return {(1 - s) * p0.L + s * p1.L, (1 - s) * p0.x + s * p1.x}; }
+
 Affine proxy_map(const PartProxy& proxy, double t) {
   const int k = proxy.step_of(t);
   const double t0 = proxy.times[k], t1 = proxy.times[k + 1];
-  const Eigen::Isometry3d& P0 = proxy.poses[k];
-  const Eigen::Isometry3d& P1 = proxy.poses[k + 1];
-  if (t <= t0) return {P0.linear(), P0.translation()};
-  if (t >= t1) return {P1.linear(), P1.translation()};
-  const double s = (t - t0) / (t1 - t0);
-  return {(1 - s) * P0.linear() + s * P1.linear(), (1 - s) * P0.translation() + s * P1.translation()};
+  const Affine p0{proxy.poses[k].linear(), proxy.poses[k].translation()};
+  const Affine p1{proxy.poses[k + 1].linear(), proxy.poses[k + 1].translation()};
+  if (t <= t0) return p0;
+  if (t >= t1) return p1;
+  return between(p0, p1, (t - t0) / (t1 - t0));
 }
 
 /// Both parts of a pair placed at the merged sample times of their proxies over a range:
@@ -191,9 +193,7 @@ struct Traversal {
       const int s = std::clamp(static_cast<int>(std::upper_bound(line.times.begin(), line.times.end(), t) - line.times.begin()) - 1,
                                0, static_cast<int>(line.times.size()) - 2);
       const double mu = std::clamp((t - line.times[s]) / (line.times[s + 1] - line.times[s]), 0.0, 1.0);
-      const Affine& p0 = line.maps[side][s];
-      const Affine& p1 = line.maps[side][s + 1];
-      return Affine{(1 - mu) * p0.L + mu * p1.L, (1 - mu) * p0.x + mu * p1.x};
+      return between(line.maps[side][s], line.maps[side][s + 1], mu);
     };
     extend(at(t0));
     extend(at(t1));
@@ -317,11 +317,6 @@ bool covered(const Traversal<family>& tr, const WorkItem& item, const ItemContex
     return std::pair{std::max(line.times[item.s0], tr.grid.lo(k)), std::min(line.times[item.s1], tr.grid.hi(k))};
   };
   const StepGroups* groups = item.s1 - item.s0 == 1 ? context.step_groups(item.pair, item.s0) : nullptr;
-  for (int k = first; k <= last; ++k) {  // the cheap test first: are the times covered at all?
-    const auto [t0, t1] = window(k);
-    if (groups && (*groups)[k - first].covers_time(t0, t1)) continue;
-    if (!box_between(t0, t1).isEmpty()) return false;
-  }
   for (int k = first; k <= last; ++k) {
     const auto [t0, t1] = window(k);
     const Eigen::AlignedBox3d box = box_between(t0, t1);
