@@ -26,6 +26,7 @@ struct CheckOptions {
   int dop = 28;
   bool conservative = false;
   bool all_contacts = false;
+  double box_resolution = collision::DetectorOptions{}.box_resolution;
   int threads = 0;
   int samples = 1000;
   std::vector<std::string> transitions;
@@ -154,6 +155,7 @@ CheckOutcome run_engine(const scene::Reconfigurable& scene, const CheckOptions& 
   request.detector.dop = dop_family(options.dop);
   request.detector.conservative = options.conservative;
   request.detector.all_contacts = options.all_contacts;
+  request.detector.box_resolution = options.box_resolution;
   request.transitions = transitions;
   request.progress = progress;
   const collision::CollisionResult result = collision::detect_collisions(scene, request);
@@ -165,6 +167,7 @@ CheckOutcome run_engine(const scene::Reconfigurable& scene, const CheckOptions& 
            {"tolerance", options.tolerance},
            {"conservative", options.conservative},
            {"all_contacts", options.all_contacts},
+           {"box_resolution", options.box_resolution},
            {"proxy_samples", result.stats.proxy_samples},
            {"narrow_phase_tests", result.stats.narrow_phase}},
           0};
@@ -215,6 +218,11 @@ void add_check_command(CLI::App& app, int& exit_code) {
   command->add_flag("--all-contacts", options->all_contacts,
                     "Engine: find every intersecting triangle pair instead of stopping once the intervals are known "
                     "(same intervals, slower on deep overlaps)");
+  command->add_option("--box-resolution", options->box_resolution,
+                      "Engine: round interval boxes outward to a grid of this fraction of the smaller part's size "
+                      "(0: exact boxes, slower on deep overlaps)")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
   command->add_option("--threads", options->threads, "Worker threads (default: all cores)")->check(CLI::NonNegativeNumber);
   command->add_option("--samples", options->samples, "Time samples per transition (reference check)")
       ->check(CLI::Range(2, 10000000))

@@ -38,6 +38,30 @@ TEST(ReconfigCli, CheckFindsTheArmrestCollisionAndExitsOne) {
   EXPECT_TRUE(result["transitions"][1]["intervals"].empty());
 }
 
+/// `--box-resolution 0` gives unrounded boxes; the default rounded ones hold them, with the
+/// same times.
+TEST(ReconfigCli, CheckBoxResolutionRoundsBoxesOutward) {
+  const auto exact = run_reconfig("check " + bench_table() + " --json --transition unfold --box-resolution 0");
+  const auto rounded = run_reconfig("check " + bench_table() + " --json --transition unfold");
+  ASSERT_EQ(exact.exit_code, 1) << exact.err;
+  ASSERT_EQ(rounded.exit_code, 1) << rounded.err;
+  const nlohmann::json e = nlohmann::json::parse(exact.out)["transitions"][0]["intervals"];
+  const nlohmann::json r = nlohmann::json::parse(rounded.out)["transitions"][0]["intervals"];
+  ASSERT_EQ(e.size(), r.size());
+  bool wider = false;
+  for (std::size_t i = 0; i < e.size(); ++i) {
+    EXPECT_EQ(e[i]["t0"], r[i]["t0"]);
+    EXPECT_EQ(e[i]["t1"], r[i]["t1"]);
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_LE(r[i]["box_min"][k].get<double>(), e[i]["box_min"][k].get<double>());
+      EXPECT_GE(r[i]["box_max"][k].get<double>(), e[i]["box_max"][k].get<double>());
+      wider = wider || r[i]["box_max"][k].get<double>() > e[i]["box_max"][k].get<double>();
+    }
+  }
+  EXPECT_TRUE(wider);
+  EXPECT_EQ(run_reconfig("check " + bench_table() + " --box-resolution -1").exit_code, 2);
+}
+
 TEST(ReconfigCli, CheckOfACollisionFreeTransitionExitsZero) {
   const auto run = run_reconfig("check " + bench_table() + " --transition unfold_lifted --samples 200");
   EXPECT_EQ(run.exit_code, 0) << run.err;

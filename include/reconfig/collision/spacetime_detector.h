@@ -47,6 +47,12 @@ struct DetectorOptions {
   /// Contacts of a pair of parts in one frame whose boxes come closer than this fraction of
   /// the smaller part's size (its box diagonal) form one group.
   double group_gap = 0.2;
+  /// Contact boxes are rounded outward to a grid whose cells measure this fraction of the
+  /// smaller part's size (box diagonal): each group's box contains every contact's exactly and
+  /// is at most one cell larger on each side. The traversal then skips any work whose
+  /// contacts could only fall inside a group's rounded box, which is much more of it than
+  /// with exact boxes (0: exact boxes).
+  double box_resolution = 0.02;
   /// The traversal goes breadth first (a preview per level) while a level holds fewer work
   /// items than this, then depth first one proxy step at a time, so that the contacts a step
   /// finds prune the rest of it at once.

@@ -1,6 +1,7 @@
 #include "collision/detail/frame_contacts.h"
 
 #include <algorithm>
+#include <limits>
 
 #include "collision/detail/interval_merging.h"
 #include "reconfig/collision/consolidate.h"
@@ -23,10 +24,16 @@ void FrameContacts::add(const TriangleContact& contact) {
   groups_.push_back(std::move(grown));
 }
 
-bool FrameContacts::covers(double t0, double t1, const Eigen::AlignedBox3d& box) const {
-  return std::any_of(groups_.begin(), groups_.end(), [&](const CollisionInterval& g) {
-    return !g.possible && g.t0 <= t0 && t1 <= g.t1 && g.box.contains(box);
-  });
+double FrameContacts::protrusion(double t0, double t1, const Eigen::AlignedBox3d& box, double time_unit,
+                                 double space_unit) const {
+  double least = std::numeric_limits<double>::infinity();
+  for (const CollisionInterval& g : groups_) {
+    if (g.possible) continue;
+    const double out_time = std::max({g.t0 - t0, t1 - g.t1, 0.0}) / time_unit;
+    const double out_space = std::max({(g.box.min() - box.min()).maxCoeff(), (box.max() - g.box.max()).maxCoeff(), 0.0}) / space_unit;
+    least = std::min(least, std::max(out_time, out_space));
+  }
+  return least;
 }
 
 }  // namespace reconfig::collision::detail

@@ -20,9 +20,13 @@ class FrameContacts {
   /// Merges a contact of this pair of parts within this frame.
   void add(const TriangleContact& contact);
 
-  /// Whether some confirmed (not `possible`) group contains both the time range [t0, t1] and
-  /// the box: then any contact within them merges into that group and changes nothing.
-  bool covers(double t0, double t1, const Eigen::AlignedBox3d& box) const;
+  /// How far the time range [t0, t1] and the box stick out of the confirmed (not `possible`)
+  /// group they stick out of least, in units: the larger of the time it extends beyond the
+  /// group's time range, over `time_unit`, and the largest distance, along an axis, by which
+  /// a face of the box lies outside the group's box, over `space_unit`. 0 if some confirmed
+  /// group contains both: then any contact within them merges into that group and changes
+  /// nothing. Infinite if there is no confirmed group.
+  double protrusion(double t0, double t1, const Eigen::AlignedBox3d& box, double time_unit, double space_unit) const;
 
   const std::vector<CollisionInterval>& groups() const { return groups_; }
 

@@ -6,11 +6,12 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
-#include <deque>
 #include <functional>
 #include <map>
+#include <queue>
 #include <tuple>
 
+#include "collision/detail/box_grid.h"
 #include "collision/detail/frame_contacts.h"
 #include "reconfig/collision/frame_grid.h"
 #include "reconfig/collision/triangle_pair_ccd.h"
@@ -22,9 +23,13 @@ namespace {
 using MovingTriangle = std::array<Eigen::Vector3d, 3>;
 
 /// How far apart two contacts of a pair of parts in one frame may lie and still be grouped.
-double group_gap(const DetectorOptions& options, const BodyTree& a, const BodyTree& b) {
+double smaller_diagonal(const BodyTree& a, const BodyTree& b) {
   const auto diagonal = [](const BodyTree& tree) { return 2 * tree.node(BodyTree::kRoot).half.norm(); };
-  return options.group_gap * std::min(diagonal(a), diagonal(b));
+  return std::min(diagonal(a), diagonal(b));
+}
+
+double group_gap(const DetectorOptions& options, const BodyTree& a, const BodyTree& b) {
+  return options.group_gap * smaller_diagonal(a, b);
 }
 
 /// A proxy's placement at one time: between two samples the vertices interpolate linearly,
@@ -66,6 +71,7 @@ PairTimeline make_timeline(const std::vector<PartProxy>& proxies, int a, int b, 
   for (int part : {a, b})
     for (double t : proxies[part].times)
       if (t > t0 && t < t1) times.push_back(t);
+
   std::sort(times.begin(), times.end());
   times.erase(std::unique(times.begin(), times.end()), times.end());
   line.times = times;
@@ -139,10 +145,20 @@ struct Traversal {
   const geometry::Mesh& mesh(int pair, int side) const { return scene.parts[side == 0 ? lines[pair].a : lines[pair].b].mesh; }
   const BodyTree& tree(int pair, int side) const { return *trees[side == 0 ? lines[pair].a : lines[pair].b]; }
 
-  Dop bound(int pair, int side, int node_index, int s0, int s1) const {
+  /// The node's spacetime k-DOP over samples [s0, s1], padded against rounding (and grown by
+  /// the proxy's deviation in conservative mode); `ends`, if given, receives its spatial boxes
+  /// at samples s0 and s1, padded (and grown) alike.
+  Dop bound(int pair, int side, int node_index, int s0, int s1, std::array<Eigen::AlignedBox3d, 2>* ends = nullptr) const {
     const BodyTree::Node& node = tree(pair, side).node(node_index);
     const auto& samples = axes[pair][side];
     Dop dop;
+    const auto at_end = [&](int s, int j, double lo, double hi) {
+      if (!ends || j >= 3 || (s != s0 && s != s1)) return;
+      Eigen::AlignedBox3d& box = (*ends)[s == s0 ? 0 : 1];
+      box.min()[j] = std::min(box.min()[j], lo);
+      box.max()[j] = std::max(box.max()[j], hi);
+    };
+    if (ends) *ends = {Eigen::AlignedBox3d(), Eigen::AlignedBox3d()};
     if (node.leaf()) {
       const geometry::Mesh& m = mesh(pair, side);
       for (int c = 0; c < 3; ++c) {
@@ -152,6 +168,7 @@ struct Traversal {
             const double value = samples[s].u[j].dot(v) + samples[s].offset[j];
             dop.lo[j] = std::min(dop.lo[j], value);
             dop.hi[j] = std::max(dop.hi[j], value);
+            at_end(s, j, value, value);
           }
       }
     } else {
@@ -162,13 +179,17 @@ struct Traversal {
           const double reach = u.cwiseAbs().dot(node.half);
           dop.lo[j] = std::min(dop.lo[j], center - reach);
           dop.hi[j] = std::max(dop.hi[j], center + reach);
+          at_end(s, j, center - reach, center + reach);
         }
     }
     for (int j = 0; j < K; ++j) {
       dop.lo[j] -= pad;
       dop.hi[j] += pad;
     }
-    if (options.conservative) dop.inflate(proxies[side == 0 ? lines[pair].a : lines[pair].b].deviation);
+    const double deviation = options.conservative ? proxies[side == 0 ? lines[pair].a : lines[pair].b].deviation : 0.0;
+    if (deviation > 0) dop.inflate(deviation);
+    if (ends)
+      for (Eigen::AlignedBox3d& box : *ends) box = inflated(box, pad + deviation);
     return dop;
   }
 
@@ -203,6 +224,11 @@ struct Traversal {
   }
 
   double gap(int pair) const { return group_gap(options, tree(pair, 0), tree(pair, 1)); }
+  /// The distance that counts as much as a frame's time when ordering work by how far its
+  /// contacts could lie outside the groups (a fiftieth of the smaller part's size).
+  double urgency_unit(int pair) const { return smaller_diagonal(tree(pair, 0), tree(pair, 1)) / 50; }
+  /// The cell of the grid a pair's contact boxes are rounded out to.
+  double cell(int pair) const { return options.box_resolution * smaller_diagonal(tree(pair, 0), tree(pair, 1)); }
 
   MovingTriangle corners(int pair, int side, int triangle, int s) const {
     const geometry::Mesh& m = mesh(pair, side);
@@ -304,30 +330,38 @@ std::pair<int, int> item_frames(const Traversal<family>& tr, const WorkItem& ite
   return tr.grid.frames_overlapping(line.times[item.s0], line.times[item.s1]);
 }
 
-/// Whether every contact the item could find would fall inside a group of its step (for an
-/// item over one step), or there is none to find: in each frame k, within the item's time
+/// How far the contacts the item could find might lie outside the groups of its step (for an
+/// item over one step; infinite for longer items): in each frame k, within the item's time
 /// range clipped to the frame, [t0, t1], and within `box_between(t0, t1)`, the box where the
-/// item's contacts over that time can lie (empty if the two nodes cannot meet then).
+/// item's contacts over that time can lie (empty if the two nodes cannot meet then), the
+/// `FrameContacts::protrusion` of that box; the largest over the frames. 0 if every contact
+/// the item could find would fall inside a group, or there is none to find.
 template <DopFamily family>
-bool covered(const Traversal<family>& tr, const WorkItem& item, const ItemContext& context, const auto& box_between) {
-  if (tr.options.all_contacts) return false;
+double protrusion(const Traversal<family>& tr, const WorkItem& item, const ItemContext& context, const auto& box_between) {
+  constexpr double kUnknown = std::numeric_limits<double>::infinity();
   const PairTimeline& line = tr.lines[item.pair];
   const auto [first, last] = item_frames(tr, item);
   const auto window = [&](int k) {
     return std::pair{std::max(line.times[item.s0], tr.grid.lo(k)), std::min(line.times[item.s1], tr.grid.hi(k))};
   };
   const StepGroups* groups = item.s1 - item.s0 == 1 ? context.step_groups(item.pair, item.s0) : nullptr;
+  double largest = 0;
   for (int k = first; k <= last; ++k) {
     const auto [t0, t1] = window(k);
     const Eigen::AlignedBox3d box = box_between(t0, t1);
-    if (!box.isEmpty() && !(groups && (*groups)[k - first].covers(t0, t1, box))) return false;
+    if (box.isEmpty()) continue;
+    if (tr.options.all_contacts || !groups) return kUnknown;
+    largest = std::max(largest, (*groups)[k - first].protrusion(t0, t1, box, tr.grid.width(), tr.urgency_unit(item.pair)));
+    if (largest == kUnknown) return kUnknown;
   }
-  return true;
+  return largest;
 }
 
 /// Processes one work item: prunes it, splits it into `next`, or runs the narrow phase.
+/// @return the item's `protrusion` when it was split (its children's contacts can lie no
+///         further outside the groups), else 0
 template <DopFamily family>
-void process(const Traversal<family>& tr, const WorkItem& item, std::vector<WorkItem>& next, const ItemContext& context) {
+double process(const Traversal<family>& tr, const WorkItem& item, std::vector<WorkItem>& next, const ItemContext& context) {
   DetectionStats& stats = context.stats;
   const PairTimeline& line = tr.lines[item.pair];
   const BodyTree::Node& na = tr.tree(item.pair, 0).node(item.node_a);
@@ -336,19 +370,36 @@ void process(const Traversal<family>& tr, const WorkItem& item, std::vector<Work
   const double deviation_a = tr.options.conservative ? tr.proxies[line.a].deviation : 0.0;
   const double deviation_b = tr.options.conservative ? tr.proxies[line.b].deviation : 0.0;
   Kdop<family> da, db;
+  double urgency = std::numeric_limits<double>::infinity();
   if (!(na.leaf() && nb.leaf() && single_step)) {  // that case is culled by `meeting_pieces`, tighter
     ++stats.bound_tests;
-    da = tr.bound(item.pair, 0, item.node_a, item.s0, item.s1);
-    db = tr.bound(item.pair, 1, item.node_b, item.s0, item.s1);
-    if (!da.overlaps(db)) return;
+    std::array<Eigen::AlignedBox3d, 2> ends_a, ends_b;  // spatial boxes at the ends of a single step
+    da = tr.bound(item.pair, 0, item.node_a, item.s0, item.s1, single_step ? &ends_a : nullptr);
+    db = tr.bound(item.pair, 1, item.node_b, item.s0, item.s1, single_step ? &ends_b : nullptr);
+    if (!da.overlaps(db)) return 0;
+    const double step_t0 = line.times[item.s0], step_t1 = line.times[item.s1];
     const auto box_between = [&](double t0, double t1) {
-      if (t0 <= line.times[item.s0] && t1 >= line.times[item.s1]) return spatial_box(da).intersection(spatial_box(db));
+      if (t0 <= step_t0 && t1 >= step_t1) return spatial_box(da).intersection(spatial_box(db));
+      if (single_step) {
+        // Within one step a node's box at a time lies within the interpolation of its boxes at
+        // the step's ends (its center moves linearly, and its reach |L|·half is convex in time),
+        // so over [t0, t1] within the hull of those interpolations at t0 and t1.
+        const double mu0 = std::max(0.0, (t0 - step_t0) / (step_t1 - step_t0)), mu1 = std::min(1.0, (t1 - step_t0) / (step_t1 - step_t0));
+        const auto sweep = [&](const std::array<Eigen::AlignedBox3d, 2>& ends) {
+          const auto lerp = [&](double mu) {
+            return Eigen::AlignedBox3d((1 - mu) * ends[0].min() + mu * ends[1].min(), (1 - mu) * ends[0].max() + mu * ends[1].max());
+          };
+          return lerp(mu0).extend(lerp(mu1));
+        };
+        return inflated(sweep(ends_a), tr.pad).intersection(inflated(sweep(ends_b), tr.pad));
+      }
       return tr.box_between(item.pair, 0, item.node_a, t0, t1, deviation_a)
           .intersection(tr.box_between(item.pair, 1, item.node_b, t0, t1, deviation_b));
     };
-    if (covered(tr, item, context, box_between)) {
+    urgency = protrusion(tr, item, context, box_between);
+    if (urgency == 0) {
       ++stats.pruned;
-      return;
+      return 0;
     }
   }
   const auto push = [&](int node_a, int node_b, int s0, int s1) { next.push_back({item.pair, node_a, node_b, s0, s1}); };
@@ -379,7 +430,8 @@ void process(const Traversal<family>& tr, const WorkItem& item, std::vector<Work
           Eigen::AlignedBox3d box = possible ? Eigen::AlignedBox3d() : box_a.intersection(box_b);
           if (box.isEmpty()) box = inflated(box_a, grow_a).intersection(inflated(box_b, grow_b));
           if (box.isEmpty()) return;
-          context.contacts.push_back({item.pair, {line.a, na.triangle, line.b, nb.triangle, lo, hi, box, possible, t0, t1}});
+          context.contacts.push_back(
+              {item.pair, {line.a, na.triangle, line.b, nb.triangle, lo, hi, round_out(box, tr.cell(item.pair)), possible, t0, t1}});
         };
         const double ta = time_at(mu0), tb = time_at(mu1);
         if (ta == tb) {
@@ -405,7 +457,7 @@ void process(const Traversal<family>& tr, const WorkItem& item, std::vector<Work
           return inflated(triangle_box_at(a0, a1, mu0, mu1), deviation_a + tr.pad)
               .intersection(inflated(triangle_box_at(b0, b1, mu0, mu1), deviation_b + tr.pad));
         };
-        if (covered(tr, step, context, box_between)) {
+        if (protrusion(tr, step, context, box_between) == 0) {
           ++stats.pruned;
           return;
         }
@@ -450,21 +502,21 @@ void process(const Traversal<family>& tr, const WorkItem& item, std::vector<Work
     };
     if (single_step || (!line.moving[0] && !line.moving[1])) {
       leaves(item.s0, item.s1);
-      return;
+      return 0;
     }
     // Over a few steps, bound each step on its own: halving the range again and again would
     // bound every half over all its samples. Long ranges are halved first, as a range where the
     // triangles meet nowhere is then dropped with one test.
     if (item.s1 - item.s0 > kStepwiseLeafSteps) {
       split_time();
-      return;
+      return urgency;
     }
     for (int s = item.s0; s < item.s1; ++s) {
       ++stats.bound_tests;
       if (tr.bound(item.pair, 0, item.node_a, s, s + 1).overlaps(tr.bound(item.pair, 1, item.node_b, s, s + 1)))
         leaves(s, s + 1);
     }
-    return;
+    return 0;
   }
   // Split the dimension that makes the bounds loose: time when the motion over the range
   // sweeps further than the nodes are large, else the larger node.
@@ -479,6 +531,7 @@ void process(const Traversal<family>& tr, const WorkItem& item, std::vector<Work
     push(item.node_a, nb.left, item.s0, item.s1);
     push(item.node_a, nb.right, item.s0, item.s1);
   }
+  return urgency;
 }
 
 
@@ -629,32 +682,29 @@ bool run_traversal(const Traversal<family>& tr, std::vector<TriangleContact>& co
       tbb::parallel_for(first, end, [&](std::size_t g) {
         std::vector<LineContact>& local = batch_contacts[g - first];
         const ItemContext context{step_groups, local, batch_stats[g - first]};
-        // Depth first from `stack` until a contact is found, or until it is empty.
-        std::vector<WorkItem> children;
-        const auto probe = [&](std::vector<WorkItem>& stack) {
-          while (!stack.empty()) {
-            const WorkItem item = stack.back();
-            stack.pop_back();
-            const std::size_t known = local.size();
-            process(tr, item, children, context);
-            for (std::size_t c = known; c < local.size(); ++c) found.add(local[c].line, local[c].contact);
-            stack.insert(stack.end(), children.rbegin(), children.rend());
-            children.clear();
-            if (local.size() > known) return;
-          }
+        // Best first: the item whose contacts could lie furthest outside the groups found so
+        // far (children inherit their parent's protrusion, which bounds theirs), so that the
+        // contacts that make the groups' extremes come early and prune the rest; among items
+        // where nothing is known yet, the deepest (depth first, to find a first contact soon).
+        struct Queued {
+          double urgency;
+          long order;
+          WorkItem item;
+          bool operator<(const Queued& o) const { return std::tie(urgency, order) < std::tie(o.urgency, o.order); }
         };
-        // Probe every subtree until it yields its first contact, in breadth-first order of the
-        // probes: what a probe leaves (the siblings on its way down) is probed later, so the
-        // contacts found early lie all over the region and the groups' boxes are nearly whole
-        // before most of the work is looked at.
-        std::deque<WorkItem> queue(items.begin() + static_cast<std::ptrdiff_t>(steps[g].first),
-                                   items.begin() + static_cast<std::ptrdiff_t>(steps[g].second));
-        std::vector<WorkItem> stack;
+        std::priority_queue<Queued> queue;
+        long order = 0;
+        for (std::size_t i = steps[g].second; i-- > steps[g].first;)
+          queue.push({std::numeric_limits<double>::infinity(), order++, items[i]});
+        std::vector<WorkItem> children;
         while (!queue.empty()) {
-          stack.assign(1, queue.front());
-          queue.pop_front();
-          probe(stack);
-          queue.insert(queue.end(), stack.begin(), stack.end());
+          const WorkItem item = queue.top().item;
+          queue.pop();
+          const std::size_t known = local.size();
+          const double urgency = process(tr, item, children, context);
+          for (std::size_t c = known; c < local.size(); ++c) found.add(local[c].line, local[c].contact);
+          for (auto child = children.rbegin(); child != children.rend(); ++child) queue.push({urgency, order++, *child});
+          children.clear();
         }
       });
       for (std::size_t g = first; g < end; ++g) {
