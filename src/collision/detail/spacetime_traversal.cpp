@@ -110,12 +110,15 @@ struct Traversal {
   const DetectorOptions& options;
   const FrameGrid grid;
   std::vector<PairTimeline> lines;
-  /// Per pair, side and sample: u_i = Lᵀ ds_i and the offset ds_i·x + dt_i τ of each axis.
+  /// Per pair, side and sample: row i of U is u_i = Lᵀ ds_i (ds_i the spatial part of axis i),
+  /// so that axis i of a rest point v measures U v + offset; `reach` = |U| (entrywise), for
+  /// boxes; offset_i = ds_i·x + dt_i τ.
   struct SampleAxes {
-    std::array<Eigen::Vector3d, K> u;
-    std::array<double, K> offset;
+    Eigen::Matrix<double, K, 3> U, reach;
+    Eigen::Matrix<double, K, 1> offset;
+    EIGEN_MAKE_ALIGNED_OPERATOR_NEW
   };
-  std::vector<std::array<std::vector<SampleAxes>, 2>> axes;
+  std::vector<std::array<std::vector<SampleAxes, Eigen::aligned_allocator<SampleAxes>>, 2>> axes;
   double pad = 0;  ///< absolute padding against rounding in bound arithmetic
 
   Traversal(const scene::Reconfigurable& s, const BodyTrees& t, const std::vector<PartProxy>& p,
@@ -131,9 +134,10 @@ struct Traversal {
           SampleAxes sample;
           for (int j = 0; j < K; ++j) {
             const Eigen::Vector3d ds = dirs[j].template head<3>();
-            sample.u[j] = m.L.transpose() * ds;
+            sample.U.row(j) = (m.L.transpose() * ds).transpose();
             sample.offset[j] = ds.dot(m.x) + dirs[j][3] * lines[i].times[k];
           }
+          sample.reach = sample.U.cwiseAbs();
           scale = std::max(scale, m.x.cwiseAbs().maxCoeff());
           axes[i][side].push_back(sample);
         }
@@ -146,50 +150,49 @@ struct Traversal {
   const BodyTree& tree(int pair, int side) const { return *trees[side == 0 ? lines[pair].a : lines[pair].b]; }
 
   /// The node's spacetime k-DOP over samples [s0, s1], padded against rounding (and grown by
-  /// the proxy's deviation in conservative mode); `ends`, if given, receives its spatial boxes
-  /// at samples s0 and s1, padded (and grown) alike.
-  Dop bound(int pair, int side, int node_index, int s0, int s1, std::array<Eigen::AlignedBox3d, 2>* ends = nullptr) const {
+  /// the proxy's deviation in conservative mode); `ends`, if given, receives its k-DOPs at
+  /// samples s0 and s1, padded (and grown) alike.
+  Dop bound(int pair, int side, int node_index, int s0, int s1, std::array<Dop, 2>* ends = nullptr) const {
     const BodyTree::Node& node = tree(pair, side).node(node_index);
     const auto& samples = axes[pair][side];
     Dop dop;
-    const auto at_end = [&](int s, int j, double lo, double hi) {
-      if (!ends || j >= 3 || (s != s0 && s != s1)) return;
-      Eigen::AlignedBox3d& box = (*ends)[s == s0 ? 0 : 1];
-      box.min()[j] = std::min(box.min()[j], lo);
-      box.max()[j] = std::max(box.max()[j], hi);
+    using Axes = Eigen::Matrix<double, K, 1>;
+    Axes lo = Axes::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+    const auto add = [&](int s, const Axes& low, const Axes& high) {
+      lo = lo.cwiseMin(low);
+      hi = hi.cwiseMax(high);
+      if (ends && (s == s0 || s == s1)) {
+        Dop& end = (*ends)[s == s0 ? 0 : 1];
+        for (int j = 0; j < K; ++j) {
+          end.lo[j] = low[j] - pad;
+          end.hi[j] = high[j] + pad;
+        }
+      }
     };
-    if (ends) *ends = {Eigen::AlignedBox3d(), Eigen::AlignedBox3d()};
     if (node.leaf()) {
       const geometry::Mesh& m = mesh(pair, side);
-      for (int c = 0; c < 3; ++c) {
-        const Eigen::Vector3d v = m.V.row(m.F(node.triangle, c));
-        for (int s = s0; s <= s1; ++s)
-          for (int j = 0; j < K; ++j) {
-            const double value = samples[s].u[j].dot(v) + samples[s].offset[j];
-            dop.lo[j] = std::min(dop.lo[j], value);
-            dop.hi[j] = std::max(dop.hi[j], value);
-            at_end(s, j, value, value);
-          }
+      Eigen::Matrix3d corners;  // one vertex per column
+      for (int c = 0; c < 3; ++c) corners.col(c) = m.V.row(m.F(node.triangle, c)).transpose();
+      for (int s = s0; s <= s1; ++s) {
+        const Eigen::Matrix<double, K, 3> values = (samples[s].U * corners).colwise() + samples[s].offset;
+        add(s, values.rowwise().minCoeff(), values.rowwise().maxCoeff());
       }
     } else {
-      for (int s = s0; s <= s1; ++s)
-        for (int j = 0; j < K; ++j) {
-          const Eigen::Vector3d& u = samples[s].u[j];
-          const double center = u.dot(node.center) + samples[s].offset[j];
-          const double reach = u.cwiseAbs().dot(node.half);
-          dop.lo[j] = std::min(dop.lo[j], center - reach);
-          dop.hi[j] = std::max(dop.hi[j], center + reach);
-          at_end(s, j, center - reach, center + reach);
-        }
+      for (int s = s0; s <= s1; ++s) {
+        const Axes center = samples[s].U * node.center + samples[s].offset, reach = samples[s].reach * node.half;
+        add(s, center - reach, center + reach);
+      }
     }
     for (int j = 0; j < K; ++j) {
-      dop.lo[j] -= pad;
-      dop.hi[j] += pad;
+      dop.lo[j] = lo[j] - pad;
+      dop.hi[j] = hi[j] + pad;
     }
     const double deviation = options.conservative ? proxies[side == 0 ? lines[pair].a : lines[pair].b].deviation : 0.0;
-    if (deviation > 0) dop.inflate(deviation);
-    if (ends)
-      for (Eigen::AlignedBox3d& box : *ends) box = inflated(box, pad + deviation);
+    if (deviation > 0) {
+      dop.inflate(deviation);
+      if (ends)
+        for (Dop& end : *ends) end.inflate(deviation);
+    }
     return dop;
   }
 
@@ -330,6 +333,34 @@ std::pair<int, int> item_frames(const Traversal<family>& tr, const WorkItem& ite
   return tr.grid.frames_overlapping(line.times[item.s0], line.times[item.s1]);
 }
 
+/// The fractions μ ∈ [0, 1] of a step during which two nodes may meet, given their k-DOPs at
+/// the step's ends (`a`, `b`); empty (first > second) if they cannot. Along every axis a point's
+/// projection moves linearly over the step, so the lowest projection of a set of points is
+/// concave in μ (and the highest convex): it stays above the line between its values at the
+/// ends (the highest below). Where those lines of A and B leave a gap along some axis, the
+/// nodes cannot meet.
+template <DopFamily family>
+std::pair<double, double> meeting_range(const std::array<Kdop<family>, 2>& a, const std::array<Kdop<family>, 2>& b) {
+  constexpr double kSlack = 1e-9;  // absorbs the rounding of the crossing points
+  double first = 0, last = 1;
+  // Keeps the μ where f (linear, f0 at 0 and f1 at 1) is at most 0.
+  const auto keep_nonpositive = [&](double f0, double f1) {
+    if (f0 <= 0 && f1 <= 0) return;
+    if (f0 > 0 && f1 > 0) {
+      first = 1, last = 0;
+      return;
+    }
+    const double crossing = f0 / (f0 - f1);
+    if (f0 > 0) first = std::max(first, crossing - kSlack);
+    else last = std::min(last, crossing + kSlack);
+  };
+  for (int j = 0; j < Kdop<family>::kAxes && first <= last; ++j) {
+    keep_nonpositive(a[0].lo[j] - b[0].hi[j], a[1].lo[j] - b[1].hi[j]);
+    keep_nonpositive(b[0].lo[j] - a[0].hi[j], b[1].lo[j] - a[1].hi[j]);
+  }
+  return {std::max(first, 0.0), std::min(last, 1.0)};
+}
+
 /// How far the contacts the item could find might lie outside the groups of its step (for an
 /// item over one step; infinite for longer items): in each frame k, within the item's time
 /// range clipped to the frame, [t0, t1], and within `box_between(t0, t1)`, the box where the
@@ -338,16 +369,22 @@ std::pair<int, int> item_frames(const Traversal<family>& tr, const WorkItem& ite
 /// the item could find would fall inside a group, or there is none to find.
 template <DopFamily family>
 double protrusion(const Traversal<family>& tr, const WorkItem& item, const ItemContext& context, const auto& box_between) {
-  constexpr double kUnknown = std::numeric_limits<double>::infinity();
   const PairTimeline& line = tr.lines[item.pair];
-  const auto [first, last] = item_frames(tr, item);
-  const auto window = [&](int k) {
-    return std::pair{std::max(line.times[item.s0], tr.grid.lo(k)), std::min(line.times[item.s1], tr.grid.hi(k))};
-  };
+  return protrusion(tr, item, context, box_between, line.times[item.s0], line.times[item.s1]);
+}
+
+/// The same, for an item that can find contacts only during [from, to] (within its range).
+template <DopFamily family>
+double protrusion(const Traversal<family>& tr, const WorkItem& item, const ItemContext& context, const auto& box_between,
+                  double from, double to) {
+  constexpr double kUnknown = std::numeric_limits<double>::infinity();
+  const int first = item_frames(tr, item).first;  // the first frame of the item's step groups
+  const auto [first_meeting, last_meeting] = tr.grid.frames_overlapping(from, to);
   const StepGroups* groups = item.s1 - item.s0 == 1 ? context.step_groups(item.pair, item.s0) : nullptr;
   double largest = 0;
-  for (int k = first; k <= last; ++k) {
-    const auto [t0, t1] = window(k);
+  for (int k = std::max(first, first_meeting); k <= last_meeting; ++k) {
+    const double t0 = std::max(from, tr.grid.lo(k)), t1 = std::min(to, tr.grid.hi(k));
+    if (t0 > t1) continue;
     const Eigen::AlignedBox3d box = box_between(t0, t1);
     if (box.isEmpty()) continue;
     if (tr.options.all_contacts || !groups) return kUnknown;
@@ -373,11 +410,18 @@ double process(const Traversal<family>& tr, const WorkItem& item, std::vector<Wo
   double urgency = std::numeric_limits<double>::infinity();
   if (!(na.leaf() && nb.leaf() && single_step)) {  // that case is culled by `meeting_pieces`, tighter
     ++stats.bound_tests;
-    std::array<Eigen::AlignedBox3d, 2> ends_a, ends_b;  // spatial boxes at the ends of a single step
+    std::array<Kdop<family>, 2> ends_a, ends_b;  // the k-DOPs at the ends of a single step
     da = tr.bound(item.pair, 0, item.node_a, item.s0, item.s1, single_step ? &ends_a : nullptr);
     db = tr.bound(item.pair, 1, item.node_b, item.s0, item.s1, single_step ? &ends_b : nullptr);
     if (!da.overlaps(db)) return 0;
     const double step_t0 = line.times[item.s0], step_t1 = line.times[item.s1];
+    double meet_t0 = step_t0, meet_t1 = step_t1;  // when the nodes may meet
+    if (single_step) {
+      const auto [mu0, mu1] = meeting_range(ends_a, ends_b);
+      if (mu0 > mu1) return 0;
+      if (mu0 > 0) meet_t0 = step_t0 + mu0 * (step_t1 - step_t0);
+      if (mu1 < 1) meet_t1 = std::min(step_t1, step_t0 + mu1 * (step_t1 - step_t0));
+    }
     const auto box_between = [&](double t0, double t1) {
       if (t0 <= step_t0 && t1 >= step_t1) return spatial_box(da).intersection(spatial_box(db));
       if (single_step) {
@@ -385,9 +429,10 @@ double process(const Traversal<family>& tr, const WorkItem& item, std::vector<Wo
         // the step's ends (its center moves linearly, and its reach |L|·half is convex in time),
         // so over [t0, t1] within the hull of those interpolations at t0 and t1.
         const double mu0 = std::max(0.0, (t0 - step_t0) / (step_t1 - step_t0)), mu1 = std::min(1.0, (t1 - step_t0) / (step_t1 - step_t0));
-        const auto sweep = [&](const std::array<Eigen::AlignedBox3d, 2>& ends) {
+        const auto sweep = [&](const std::array<Kdop<family>, 2>& ends) {
+          const Eigen::AlignedBox3d box0 = spatial_box(ends[0]), box1 = spatial_box(ends[1]);
           const auto lerp = [&](double mu) {
-            return Eigen::AlignedBox3d((1 - mu) * ends[0].min() + mu * ends[1].min(), (1 - mu) * ends[0].max() + mu * ends[1].max());
+            return Eigen::AlignedBox3d((1 - mu) * box0.min() + mu * box1.min(), (1 - mu) * box0.max() + mu * box1.max());
           };
           return lerp(mu0).extend(lerp(mu1));
         };
@@ -396,7 +441,7 @@ double process(const Traversal<family>& tr, const WorkItem& item, std::vector<Wo
       return tr.box_between(item.pair, 0, item.node_a, t0, t1, deviation_a)
           .intersection(tr.box_between(item.pair, 1, item.node_b, t0, t1, deviation_b));
     };
-    urgency = protrusion(tr, item, context, box_between);
+    urgency = protrusion(tr, item, context, box_between, meet_t0, meet_t1);
     if (urgency == 0) {
       ++stats.pruned;
       return 0;
@@ -692,18 +737,28 @@ bool run_traversal(const Traversal<family>& tr, std::vector<TriangleContact>& co
           WorkItem item;
           bool operator<(const Queued& o) const { return std::tie(urgency, order) < std::tie(o.urgency, o.order); }
         };
+        std::vector<WorkItem> unknown;  // items where nothing is known yet: a stack, taken first
         std::priority_queue<Queued> queue;
         long order = 0;
-        for (std::size_t i = steps[g].second; i-- > steps[g].first;)
-          queue.push({std::numeric_limits<double>::infinity(), order++, items[i]});
+        unknown.assign(items.begin() + static_cast<std::ptrdiff_t>(steps[g].first),
+                       items.begin() + static_cast<std::ptrdiff_t>(steps[g].second));
+        std::reverse(unknown.begin(), unknown.end());
         std::vector<WorkItem> children;
-        while (!queue.empty()) {
-          const WorkItem item = queue.top().item;
-          queue.pop();
+        while (!unknown.empty() || !queue.empty()) {
+          WorkItem item;
+          if (!unknown.empty()) {
+            item = unknown.back();
+            unknown.pop_back();
+          } else {
+            item = queue.top().item;
+            queue.pop();
+          }
           const std::size_t known = local.size();
           const double urgency = process(tr, item, children, context);
           for (std::size_t c = known; c < local.size(); ++c) found.add(local[c].line, local[c].contact);
-          for (auto child = children.rbegin(); child != children.rend(); ++child) queue.push({urgency, order++, *child});
+          if (std::isinf(urgency)) unknown.insert(unknown.end(), children.rbegin(), children.rend());
+          else
+            for (auto child = children.rbegin(); child != children.rend(); ++child) queue.push({urgency, order++, *child});
           children.clear();
         }
       });
