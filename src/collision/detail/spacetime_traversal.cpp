@@ -4,6 +4,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <bit>
 #include <cassert>
 #include <cmath>
 #include <functional>
@@ -119,6 +120,9 @@ struct Traversal {
   };
   std::vector<std::array<std::vector<SampleAxes, Eigen::aligned_allocator<SampleAxes>>, 2>> axes;
   double pad = 0;  ///< absolute padding against rounding in bound arithmetic
+  std::vector<double> size;  ///< per pair: the smaller part's size (box diagonal)
+  /// Per pair and step: the frames the step overlaps (`FrameGrid::frames_overlapping`).
+  std::vector<std::vector<std::pair<int, int>>> step_frames;
 
   Traversal(const scene::Reconfigurable& s, const BodyTrees& t, const std::vector<PartProxy>& p,
             const DetectorOptions& o, std::vector<PairTimeline> l)
@@ -143,6 +147,12 @@ struct Traversal {
     for (int p2 = 0; p2 < static_cast<int>(scene.parts.size()); ++p2)
       scale = std::max(scale, scene.parts[p2].mesh.V.cwiseAbs().maxCoeff());
     pad = 64 * std::numeric_limits<double>::epsilon() * scale;
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+      size.push_back(smaller_diagonal(tree(static_cast<int>(i), 0), tree(static_cast<int>(i), 1)));
+      step_frames.emplace_back();
+      for (std::size_t k = 0; k + 1 < lines[i].times.size(); ++k)
+        step_frames.back().push_back(grid.frames_overlapping(lines[i].times[k], lines[i].times[k + 1]));
+    }
   }
 
   const geometry::Mesh& mesh(int pair, int side) const { return scene.parts[side == 0 ? lines[pair].a : lines[pair].b].mesh; }
@@ -225,12 +235,12 @@ struct Traversal {
     return inflated(box, pad + deviation);
   }
 
-  double gap(int pair) const { return group_gap(options, tree(pair, 0), tree(pair, 1)); }
+  double gap(int pair) const { return options.group_gap * size[pair]; }
   /// The distance that counts as much as a frame's time when ordering work by how far its
   /// contacts could lie outside the groups (a fiftieth of the smaller part's size).
-  double urgency_unit(int pair) const { return smaller_diagonal(tree(pair, 0), tree(pair, 1)) / 50; }
+  double urgency_unit(int pair) const { return size[pair] / 50; }
   /// The cell of the grid a pair's contact boxes are rounded out to.
-  double cell(int pair) const { return options.box_resolution * smaller_diagonal(tree(pair, 0), tree(pair, 1)); }
+  double cell(int pair) const { return options.box_resolution * size[pair]; }
 
   MovingTriangle corners(int pair, int side, int triangle, int s) const {
     const geometry::Mesh& m = mesh(pair, side);
@@ -328,8 +338,7 @@ int frame_of_contact(const FrameGrid& grid, const TriangleContact& c) { return g
 /// where the previous step reports it).
 template <DopFamily family>
 std::pair<int, int> item_frames(const Traversal<family>& tr, const WorkItem& item) {
-  const PairTimeline& line = tr.lines[item.pair];
-  return tr.grid.frames_overlapping(line.times[item.s0], line.times[item.s1]);
+  return {tr.step_frames[item.pair][item.s0].first, tr.step_frames[item.pair][item.s1 - 1].second};
 }
 
 /// The fractions μ ∈ [0, 1] of a step during which two nodes may meet, given their k-DOPs at
@@ -377,11 +386,10 @@ template <DopFamily family>
 double protrusion(const Traversal<family>& tr, const WorkItem& item, const ItemContext& context, const auto& box_between,
                   double from, double to) {
   constexpr double kUnknown = std::numeric_limits<double>::infinity();
-  const int first = item_frames(tr, item).first;  // the first frame of the item's step groups
-  const auto [first_meeting, last_meeting] = tr.grid.frames_overlapping(from, to);
+  const auto [first, last] = item_frames(tr, item);  // `first`: that of the item's step groups
   const StepGroups* groups = item.s1 - item.s0 == 1 ? context.step_groups(item.pair, item.s0) : nullptr;
   double largest = 0;
-  for (int k = std::max(first, first_meeting); k <= last_meeting; ++k) {
+  for (int k = first; k <= last; ++k) {
     const double t0 = std::max(from, tr.grid.lo(k)), t1 = std::min(to, tr.grid.hi(k));
     if (t0 > t1) continue;
     const Eigen::AlignedBox3d box = box_between(t0, t1);
@@ -457,7 +465,7 @@ double process(const Traversal<family>& tr, const WorkItem& item, std::vector<Wo
     // which both hold still.
     const auto leaves = [&](int s0, int s1) {
       const double t0 = line.times[s0], t1 = line.times[s1];
-      const auto [first_frame, last_frame] = tr.grid.frames_overlapping(t0, t1);
+      const auto [first_frame, last_frame] = item_frames(tr, {item.pair, item.node_a, item.node_b, s0, s1});
       const auto time_at = [&](double mu) { return mu == 0 ? t0 : mu == 1 ? t1 : t0 + mu * (t1 - t0); };
       const auto mu_at = [&](double t) { return (t - t0) / (t1 - t0); };
       // Reports the contact over step parameters [mu0, mu1] clipped to each of the item's frames.
@@ -501,11 +509,15 @@ double process(const Traversal<family>& tr, const WorkItem& item, std::vector<Wo
           return inflated(triangle_box_at(a0, a1, mu0, mu1), deviation_a + tr.pad)
               .intersection(inflated(triangle_box_at(b0, b1, mu0, mu1), deviation_b + tr.pad));
         };
-        if (protrusion(tr, step, context, box_between) == 0) {
+        const unsigned meeting = meeting_pieces<family>(a0, a1, b0, b1, deviation_a + deviation_b + 2 * tr.pad);
+        if (meeting == 0) return;
+        // Contacts can only lie within the pieces where the triangles may meet.
+        const double from = time_at(static_cast<double>(std::countr_zero(meeting)) / kCullPieces);
+        const double to = time_at(static_cast<double>(kCullPieces - std::countl_zero(meeting << (32 - kCullPieces))) / kCullPieces);
+        if (protrusion(tr, step, context, box_between, from, to) == 0) {
           ++stats.pruned;
           return;
         }
-        if (meeting_pieces<family>(a0, a1, b0, b1, deviation_a + deviation_b + 2 * tr.pad) == 0) return;
         ++stats.narrow_phase;
         TrianglePairCcdRequest request;
         request.a_start = a0;
