@@ -108,8 +108,9 @@ bool SpacetimeDetector::traverse(const scene::Reconfigurable& scene, const BodyT
     valid_ = false;
     return false;
   }
+  const auto kept = static_cast<std::ptrdiff_t>(contacts_.size());  // both runs are sorted
   contacts_.insert(contacts_.end(), contacts.begin(), contacts.end());
-  std::sort(contacts_.begin(), contacts_.end(), detail::contact_less);
+  std::inplace_merge(contacts_.begin(), contacts_.begin() + kept, contacts_.end(), detail::contact_less);
   groups_ = detail::group_contacts(contacts_, options_, trees);
 
   if (options_.detect_containment) {

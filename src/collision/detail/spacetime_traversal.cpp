@@ -1,6 +1,7 @@
 #include "collision/detail/spacetime_traversal.h"
 
 #include <tbb/combinable.h>
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -54,6 +55,17 @@ Affine proxy_map(const PartProxy& proxy, double t) {
   return between(p0, p1, (t - t0) / (t1 - t0));
 }
 
+/// Absolute padding that covers the rounding of bound arithmetic: a multiple of the machine
+/// epsilon times the largest coordinate of any rest vertex or placement.
+double rounding_pad(const scene::Reconfigurable& scene, const std::vector<PartProxy>& proxies) {
+  double scale = 1;
+  for (const scene::Part& part : scene.parts)
+    if (part.mesh.V.size() > 0) scale = std::max(scale, part.mesh.V.cwiseAbs().maxCoeff());
+  for (const PartProxy& proxy : proxies)
+    for (const Eigen::Isometry3d& pose : proxy.poses) scale = std::max(scale, pose.translation().cwiseAbs().maxCoeff());
+  return 64 * std::numeric_limits<double>::epsilon() * scale;
+}
+
 /// Both parts of a pair placed at the merged sample times of their proxies over a range:
 /// on every step between consecutive times both parts' vertices move linearly.
 struct PairTimeline {
@@ -81,6 +93,32 @@ PairTimeline make_timeline(const std::vector<PartProxy>& proxies, int a, int b, 
     for (const Affine& m : line.maps[side]) line.moving[side] = line.moving[side] || !(m == line.maps[side][0]);
   }
   return line;
+}
+
+/// The spacetime k-DOP of a part's whole box (its tree's root) over [t0, t1] of its proxy,
+/// padded by `pad` and grown by `deviation`: that of its placements at t0, t1 and at the
+/// samples between, as the box's corners move linearly in between (see `Traversal::bound`).
+template <DopFamily family>
+Kdop<family> sweep_bound(const PartProxy& proxy, const BodyTree& tree, double t0, double t1, double pad, double deviation) {
+  const auto& axes = dop_axes<family>();
+  const BodyTree::Node& root = tree.node(BodyTree::kRoot);
+  Kdop<family> dop;
+  const auto add = [&](double t) {
+    const Affine m = proxy_map(proxy, t);
+    for (int j = 0; j < Kdop<family>::kAxes; ++j) {
+      const Eigen::Vector3d ds = axes[j].template head<3>();
+      const Eigen::Vector3d u = m.L.transpose() * ds;
+      const double center = u.dot(root.center) + ds.dot(m.x) + axes[j][3] * t, reach = u.cwiseAbs().dot(root.half);
+      dop.lo[j] = std::min(dop.lo[j], center - reach - pad);
+      dop.hi[j] = std::max(dop.hi[j], center + reach + pad);
+    }
+  };
+  add(t0);
+  add(t1);
+  for (double t : proxy.times)
+    if (t > t0 && t < t1) add(t);
+  if (deviation > 0) dop.inflate(deviation);
+  return dop;
 }
 
 Eigen::AlignedBox3d inflated(Eigen::AlignedBox3d box, double by) {
@@ -119,16 +157,15 @@ struct Traversal {
     EIGEN_MAKE_ALIGNED_OPERATOR_NEW
   };
   std::vector<std::array<std::vector<SampleAxes, Eigen::aligned_allocator<SampleAxes>>, 2>> axes;
-  double pad = 0;  ///< absolute padding against rounding in bound arithmetic
+  double pad = 0;  ///< absolute padding against rounding in bound arithmetic (`rounding_pad`)
   std::vector<double> size;  ///< per pair: the smaller part's size (box diagonal)
   /// Per pair and step: the frames the step overlaps (`FrameGrid::frames_overlapping`).
   std::vector<std::vector<std::pair<int, int>>> step_frames;
 
   Traversal(const scene::Reconfigurable& s, const BodyTrees& t, const std::vector<PartProxy>& p,
-            const DetectorOptions& o, std::vector<PairTimeline> l)
-      : scene(s), trees(t), proxies(p), options(o), grid(o.frame), lines(std::move(l)) {
+            const DetectorOptions& o, std::vector<PairTimeline> l, double rounding)
+      : scene(s), trees(t), proxies(p), options(o), grid(o.frame), lines(std::move(l)), pad(rounding) {
     const auto& dirs = dop_axes<family>();
-    double scale = 1;
     axes.resize(lines.size());
     for (std::size_t i = 0; i < lines.size(); ++i)
       for (int side = 0; side < 2; ++side)
@@ -141,12 +178,8 @@ struct Traversal {
             sample.offset[j] = ds.dot(m.x) + dirs[j][3] * lines[i].times[k];
           }
           sample.reach = sample.U.cwiseAbs();
-          scale = std::max(scale, m.x.cwiseAbs().maxCoeff());
           axes[i][side].push_back(sample);
         }
-    for (int p2 = 0; p2 < static_cast<int>(scene.parts.size()); ++p2)
-      scale = std::max(scale, scene.parts[p2].mesh.V.cwiseAbs().maxCoeff());
-    pad = 64 * std::numeric_limits<double>::epsilon() * scale;
     for (std::size_t i = 0; i < lines.size(); ++i) {
       size.push_back(smaller_diagonal(tree(static_cast<int>(i), 0), tree(static_cast<int>(i), 1)));
       step_frames.emplace_back();
@@ -180,11 +213,12 @@ struct Traversal {
     };
     if (node.leaf()) {
       const geometry::Mesh& m = mesh(pair, side);
-      Eigen::Matrix3d corners;  // one vertex per column
-      for (int c = 0; c < 3; ++c) corners.col(c) = m.V.row(m.F(node.triangle, c)).transpose();
+      const Eigen::Vector3d v0 = m.V.row(m.F(node.triangle, 0)), v1 = m.V.row(m.F(node.triangle, 1)),
+                            v2 = m.V.row(m.F(node.triangle, 2));
       for (int s = s0; s <= s1; ++s) {
-        const Eigen::Matrix<double, K, 3> values = (samples[s].U * corners).colwise() + samples[s].offset;
-        add(s, values.rowwise().minCoeff(), values.rowwise().maxCoeff());
+        const Axes p0 = samples[s].U * v0 + samples[s].offset, p1 = samples[s].U * v1 + samples[s].offset,
+                   p2 = samples[s].U * v2 + samples[s].offset;
+        add(s, p0.cwiseMin(p1).cwiseMin(p2), p0.cwiseMax(p1).cwiseMax(p2));
       }
     } else {
       for (int s = s0; s <= s1; ++s) {
@@ -768,6 +802,7 @@ bool run_traversal(const Traversal<family>& tr, std::vector<TriangleContact>& co
     for (std::size_t i = 0; i < items.size(); ++i)
       if (i == 0 || items[i].pair != items[i - 1].pair || items[i].s0 != items[i - 1].s0) steps.push_back({i, i + 1});
       else steps.back().second = i + 1;
+    tbb::enumerable_thread_specific<UrgencyQueue> queues;
     for (std::size_t first = 0; first < steps.size(); first += kStepsPerBatch) {
       const std::size_t end = std::min(steps.size(), first + kStepsPerBatch);
       std::vector<std::vector<LineContact>> batch_contacts(end - first);
@@ -779,7 +814,7 @@ bool run_traversal(const Traversal<family>& tr, std::vector<TriangleContact>& co
         // far (children inherit their parent's protrusion, which bounds theirs), so that the
         // contacts that make the groups' extremes come early and prune the rest; first of all
         // the items where nothing is known yet, deepest first (to find a first contact soon).
-        UrgencyQueue queue;
+        UrgencyQueue& queue = queues.local();  // empty, its buckets' memory kept from earlier steps
         for (std::size_t i = steps[g].second; i-- > steps[g].first;) queue.push(items[i], kUnknownUrgency);
         std::vector<WorkItem> children;
         while (!queue.empty()) {
@@ -815,11 +850,25 @@ bool run_traversal(const Traversal<family>& tr, std::vector<TriangleContact>& co
 bool traverse_ranges(const scene::Reconfigurable& scene, const BodyTrees& trees, const std::vector<PartProxy>& proxies,
                      const DetectorOptions& options, const std::vector<TraversalRange>& ranges,
                      std::vector<TriangleContact>& contacts, DetectionStats& stats, const DetectCallbacks& callbacks) {
-  std::vector<PairTimeline> lines;
-  for (const TraversalRange& r : ranges) lines.push_back(make_timeline(proxies, r.a, r.b, r.t0, r.t1));
+  const double pad = rounding_pad(scene, proxies);
   bool finished = false;
   const auto run = [&]<DopFamily family>() {
-    const Traversal<family> traversal(scene, trees, proxies, options, std::move(lines));
+    // Pairs whose parts' whole sweeps over the range cannot meet are left out at once.
+    std::map<std::tuple<int, double, double>, Kdop<family>> sweeps;
+    const auto sweep = [&](int part, double t0, double t1) -> const Kdop<family>& {
+      auto at = sweeps.find({part, t0, t1});
+      if (at == sweeps.end()) {
+        const double deviation = options.conservative ? proxies[part].deviation : 0.0;
+        at = sweeps.emplace(std::tuple{part, t0, t1}, sweep_bound<family>(proxies[part], *trees[part], t0, t1, pad, deviation)).first;
+      }
+      return at->second;
+    };
+    std::vector<PairTimeline> lines;
+    for (const TraversalRange& r : ranges) {
+      ++stats.bound_tests;
+      if (sweep(r.a, r.t0, r.t1).overlaps(sweep(r.b, r.t0, r.t1))) lines.push_back(make_timeline(proxies, r.a, r.b, r.t0, r.t1));
+    }
+    const Traversal<family> traversal(scene, trees, proxies, options, std::move(lines), pad);
     finished = run_traversal(traversal, contacts, stats, callbacks);
   };
   switch (options.dop) {
