@@ -23,12 +23,14 @@ namespace {
 
 using MovingTriangle = std::array<Eigen::Vector3d, 3>;
 
-/// How far apart two contacts of a pair of parts in one frame may lie and still be grouped.
+/// The smaller of two parts' sizes (their box diagonals): the scale of a pair's grouping gap,
+/// box grid and urgency.
 double smaller_diagonal(const BodyTree& a, const BodyTree& b) {
   const auto diagonal = [](const BodyTree& tree) { return 2 * tree.node(BodyTree::kRoot).half.norm(); };
   return std::min(diagonal(a), diagonal(b));
 }
 
+/// How far apart two contacts of a pair of parts in one frame may lie and still be grouped.
 double group_gap(const DetectorOptions& options, const BodyTree& a, const BodyTree& b) {
   return options.group_gap * smaller_diagonal(a, b);
 }
@@ -83,7 +85,6 @@ PairTimeline make_timeline(const std::vector<PartProxy>& proxies, int a, int b, 
   for (int part : {a, b})
     for (double t : proxies[part].times)
       if (t > t0 && t < t1) times.push_back(t);
-
   std::sort(times.begin(), times.end());
   times.erase(std::unique(times.begin(), times.end()), times.end());
   line.times = times;
