@@ -14,16 +14,28 @@
 namespace reconfig::collision {
 namespace {
 
-/// Whether part `inner` (posed Vi) lies inside part `outer` (posed Vo), their surfaces not crossing.
-bool nested(const scene::Reconfigurable& scene, const BodyTrees& trees, int inner, const Eigen::MatrixX3d& Vi,
-            int outer, const Eigen::MatrixX3d& Vo) {
-  if (!geometry::bounding_box(Vo).contains(geometry::bounding_box(Vi))) return false;
-  const geometry::Mesh posed{Vo, scene.parts[outer].mesh.F};
-  for (int v : trees[inner]->component_vertices())
-    if (!geometry::point_in_solid(posed, Vi.row(v).transpose())) return false;
+/// Whether part `inner` lies inside part `outer` at time t of their proxies, their surfaces
+/// not crossing then: one vertex of each of its components lies inside `outer`'s solid. The
+/// whole outer mesh is posed only if those vertices lie within its (placed) bounding box.
+bool nested(const scene::Reconfigurable& scene, const BodyTrees& trees, const std::vector<PartProxy>& proxies, int inner,
+            int outer, double t) {
+  const std::vector<int>& probes = trees[inner]->component_vertices();
+  Eigen::MatrixX3d rest(static_cast<Eigen::Index>(probes.size()), 3);
+  for (std::size_t i = 0; i < probes.size(); ++i) rest.row(static_cast<Eigen::Index>(i)) = scene.parts[inner].mesh.V.row(probes[i]);
+  const Eigen::MatrixX3d points = detail::proxy_points(proxies[inner], rest, t);
+  // The outer part's box, placed: the box of its placed corners holds every placed vertex.
+  const BodyTree::Node& root = trees[outer]->node(BodyTree::kRoot);
+  Eigen::MatrixX3d corners(8, 3);
+  for (int c = 0; c < 8; ++c)
+    for (int axis = 0; axis < 3; ++axis) corners(c, axis) = root.center[axis] + ((c >> axis) & 1 ? 1 : -1) * root.half[axis];
+  const Eigen::AlignedBox3d reach = geometry::bounding_box(detail::proxy_points(proxies[outer], corners, t));
+  for (Eigen::Index i = 0; i < points.rows(); ++i)
+    if (!reach.contains(points.row(i).transpose())) return false;
+  const geometry::Mesh posed{detail::proxy_vertices(scene, proxies[outer], outer, t), scene.parts[outer].mesh.F};
+  for (Eigen::Index i = 0; i < points.rows(); ++i)
+    if (!geometry::point_in_solid(posed, points.row(i).transpose())) return false;
   return true;
 }
-
 
 }  // namespace
 
@@ -132,10 +144,8 @@ bool SpacetimeDetector::traverse(const scene::Reconfigurable& scene, const BodyT
       for (const auto& [t0, t1] : free) {
         ++stats_.containment_tests;
         const double t = (t0 + t1) / 2;
-        const Eigen::MatrixX3d Va = detail::proxy_vertices(scene, proxies_[a], a, t);
-        const Eigen::MatrixX3d Vb = detail::proxy_vertices(scene, proxies_[b], b, t);
-        for (const auto& [inner, outer, Vi, Vo] : {std::tuple{a, b, &Va, &Vb}, std::tuple{b, a, &Vb, &Va}}) {
-          if (!nested(scene, trees, inner, *Vi, outer, *Vo)) continue;
+        for (const auto& [inner, outer] : {std::pair{a, b}, std::pair{b, a}}) {
+          if (!nested(scene, trees, proxies_, inner, outer, t)) continue;
           Containment containment{inner, outer, t0, t1, {}};
           // The proxy is linear between its samples: its box over [t0, t1] is that of its
           // positions at t0, t1 and the samples between.

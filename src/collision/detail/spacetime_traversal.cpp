@@ -899,9 +899,13 @@ std::vector<CollisionInterval> group_contacts(const std::vector<TriangleContact>
   return groups;
 }
 
-Eigen::MatrixX3d proxy_vertices(const scene::Reconfigurable& scene, const PartProxy& proxy, int part, double t) {
+Eigen::MatrixX3d proxy_points(const PartProxy& proxy, const Eigen::MatrixX3d& rest, double t) {
   const Affine m = proxy_map(proxy, t);
-  return (scene.parts[part].mesh.V * m.L.transpose()).rowwise() + m.x.transpose();
+  return (rest * m.L.transpose()).rowwise() + m.x.transpose();
+}
+
+Eigen::MatrixX3d proxy_vertices(const scene::Reconfigurable& scene, const PartProxy& proxy, int part, double t) {
+  return proxy_points(proxy, scene.parts[part].mesh.V, t);
 }
 
 

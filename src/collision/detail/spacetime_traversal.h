@@ -39,4 +39,7 @@ std::vector<std::pair<double, double>> union_of(std::vector<std::pair<double, do
 /// The posed (proxy) vertices of a part at time t.
 Eigen::MatrixX3d proxy_vertices(const scene::Reconfigurable& scene, const PartProxy& proxy, int part, double t);
 
+/// Rest-frame points (rows) placed by a part's proxy at time t.
+Eigen::MatrixX3d proxy_points(const PartProxy& proxy, const Eigen::MatrixX3d& rest, double t);
+
 }  // namespace reconfig::collision::detail
