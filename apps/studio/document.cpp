@@ -101,7 +101,8 @@ void Document::save_as(const fs::path& file) {
 }
 
 std::string Document::autosave_if_due(Clock::time_point now, std::chrono::milliseconds interval) {
-  if (!autosave_pending_ || now - last_autosave_ < interval) return "";
+  if (!last_autosave_) last_autosave_ = now;
+  if (!autosave_pending_ || now - *last_autosave_ < interval) return "";
   last_autosave_ = now;
   autosave_pending_ = false;
   try {

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "reconfig/collision/collision_service.h"
@@ -52,7 +53,8 @@ class Document {
   void save_as(const std::filesystem::path& file);
 
   /// Writes the autosave when the scene changed since the last one and `interval` has passed
-  /// since then. Never throws: a failed autosave is reported in the return value.
+  /// since then (or since the first call: `now` is the caller's clock, which may be simulated).
+  /// Never throws: a failed autosave is reported in the return value.
   /// @return "" when nothing went wrong
   std::string autosave_if_due(Clock::time_point now, std::chrono::milliseconds interval);
   /// Where the autosave of `file` lives: a hidden file next to it (so relative mesh paths
@@ -92,7 +94,7 @@ class Document {
   std::uint64_t version_ = 0;
   bool modified_ = false;
   bool autosave_pending_ = false;
-  Clock::time_point last_autosave_ = Clock::now();
+  std::optional<Clock::time_point> last_autosave_;  ///< by the caller's clock; none before the first call
 };
 
 }  // namespace reconfig::studio
