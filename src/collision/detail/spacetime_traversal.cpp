@@ -405,18 +405,12 @@ std::pair<double, double> meeting_range(const std::array<Kdop<family>, 2>& a, co
 }
 
 /// How far the contacts the item could find might lie outside the groups of its step (for an
-/// item over one step; infinite for longer items): in each frame k, within the item's time
-/// range clipped to the frame, [t0, t1], and within `box_between(t0, t1)`, the box where the
-/// item's contacts over that time can lie (empty if the two nodes cannot meet then), the
-/// `FrameContacts::protrusion` of that box; the largest over the frames. 0 if every contact
-/// the item could find would fall inside a group, or there is none to find.
-template <DopFamily family>
-double protrusion(const Traversal<family>& tr, const WorkItem& item, const ItemContext& context, const auto& box_between) {
-  const PairTimeline& line = tr.lines[item.pair];
-  return protrusion(tr, item, context, box_between, line.times[item.s0], line.times[item.s1]);
-}
-
-/// The same, for an item that can find contacts only during [from, to] (within its range).
+/// item over one step; infinite for longer items), given that it can find contacts only during
+/// [from, to] (within its range): in each frame k, within [from, to] clipped to the frame,
+/// [t0, t1], and within `box_between(t0, t1)`, the box where the item's contacts over that
+/// time can lie (empty if the two nodes cannot meet then), the `FrameContacts::protrusion` of
+/// that box; the largest over the frames. 0 if every contact the item could find would fall
+/// inside a group, or there is none to find.
 template <DopFamily family>
 double protrusion(const Traversal<family>& tr, const WorkItem& item, const ItemContext& context, const auto& box_between,
                   double from, double to) {
