@@ -14,14 +14,14 @@
 
 #include "collision/detail/box_grid.h"
 #include "collision/detail/frame_contacts.h"
+#include "collision/detail/moving_bounds.h"
+#include "collision/detail/urgency_queue.h"
 #include "reconfig/collision/frame_grid.h"
 #include "reconfig/collision/triangle_pair_ccd.h"
 #include "reconfig/geometry/triangle_intersection.h"
 
 namespace reconfig::collision::detail {
 namespace {
-
-using MovingTriangle = std::array<Eigen::Vector3d, 3>;
 
 /// The smaller of two parts' sizes (their box diagonals): the scale of a pair's grouping gap,
 /// box grid and urgency.
@@ -288,66 +288,8 @@ double spatial_extent(const auto& dop) {
   return std::max({dop.hi[0] - dop.lo[0], dop.hi[1] - dop.lo[1], dop.hi[2] - dop.lo[2]});
 }
 
-Eigen::AlignedBox3d triangle_box_at(const MovingTriangle& p0, const MovingTriangle& p1, double mu0, double mu1) {
-  Eigen::AlignedBox3d box;
-  for (int c = 0; c < 3; ++c)
-    for (double mu : {mu0, mu1}) box.extend((1 - mu) * p0[c] + mu * p1[c]);
-  return box;
-}
-
-
-/// The pieces k (bit k) of `kCullPieces` equal pieces of a time step where the spacetime
-/// k-DOPs of two moving triangles, A's grown by `reach`, meet: the hull of a triangle's sweep
-/// over a whole step is much looser when it moves further than its size. Axis projections
-/// of a vertex are affine in time, so they are interpolated from those at the step's ends;
-/// the time component of an axis is the same for both triangles over a piece, so only the
-/// spatial part matters.
-constexpr int kCullPieces = 8;
-
-template <DopFamily family>
-unsigned meeting_pieces(const MovingTriangle& a0, const MovingTriangle& a1, const MovingTriangle& b0,
-                        const MovingTriangle& b1, double reach) {
-  constexpr int K = Kdop<family>::kAxes;
-  const auto& axes = dop_axes<family>();
-  unsigned meeting = (1u << kCullPieces) - 1;
-  for (int j = 0; j < K && meeting != 0; ++j) {
-    const Eigen::Vector3d axis = axes[j].template head<3>();
-    const double grow = reach * axis.norm();
-    double pa[2][3], pb[2][3];
-    for (int c = 0; c < 3; ++c) {
-      pa[0][c] = axis.dot(a0[c]), pa[1][c] = axis.dot(a1[c]);
-      pb[0][c] = axis.dot(b0[c]), pb[1][c] = axis.dot(b1[c]);
-    }
-    // Range of each triangle's projection at each piece boundary; a piece's range spans its two ends.
-    double lo_a[kCullPieces + 1], hi_a[kCullPieces + 1], lo_b[kCullPieces + 1], hi_b[kCullPieces + 1];
-    for (int k = 0; k <= kCullPieces; ++k) {
-      const double mu = static_cast<double>(k) / kCullPieces;
-      lo_a[k] = lo_b[k] = HUGE_VAL;
-      hi_a[k] = hi_b[k] = -HUGE_VAL;
-      for (int c = 0; c < 3; ++c) {
-        const double va = (1 - mu) * pa[0][c] + mu * pa[1][c], vb = (1 - mu) * pb[0][c] + mu * pb[1][c];
-        lo_a[k] = std::min(lo_a[k], va), hi_a[k] = std::max(hi_a[k], va);
-        lo_b[k] = std::min(lo_b[k], vb), hi_b[k] = std::max(hi_b[k], vb);
-      }
-    }
-    for (int k = 0; k < kCullPieces; ++k) {
-      if (!(meeting & (1u << k))) continue;
-      const double a_lo = std::min(lo_a[k], lo_a[k + 1]) - grow, a_hi = std::max(hi_a[k], hi_a[k + 1]) + grow;
-      const double b_lo = std::min(lo_b[k], lo_b[k + 1]), b_hi = std::max(hi_b[k], hi_b[k + 1]);
-      if (a_lo > b_hi || b_lo > a_hi) meeting &= ~(1u << k);
-    }
-  }
-  return meeting;
-}
-
 /// Two leaves over at most this many steps are bounded step by step.
 constexpr int kStepwiseLeafSteps = 8;
-
-/// The spatial box of a k-DOP: its first three axes are x, y and z in every family.
-template <DopFamily family>
-Eigen::AlignedBox3d spatial_box(const Kdop<family>& dop) {
-  return {Eigen::Vector3d(dop.lo[0], dop.lo[1], dop.lo[2]), Eigen::Vector3d(dop.hi[0], dop.hi[1], dop.hi[2])};
-}
 
 /// A contact and the pair timeline it was found on.
 struct LineContact {
@@ -374,34 +316,6 @@ int frame_of_contact(const FrameGrid& grid, const TriangleContact& c) { return g
 template <DopFamily family>
 std::pair<int, int> item_frames(const Traversal<family>& tr, const WorkItem& item) {
   return {tr.step_frames[item.pair][item.s0].first, tr.step_frames[item.pair][item.s1 - 1].second};
-}
-
-/// The fractions μ ∈ [0, 1] of a step during which two nodes may meet, given their k-DOPs at
-/// the step's ends (`a`, `b`); empty (first > second) if they cannot. Along every axis a point's
-/// projection moves linearly over the step, so the lowest projection of a set of points is
-/// concave in μ (and the highest convex): it stays above the line between its values at the
-/// ends (the highest below). Where those lines of A and B leave a gap along some axis, the
-/// nodes cannot meet.
-template <DopFamily family>
-std::pair<double, double> meeting_range(const std::array<Kdop<family>, 2>& a, const std::array<Kdop<family>, 2>& b) {
-  constexpr double kSlack = 1e-9;  // absorbs the rounding of the crossing points
-  double first = 0, last = 1;
-  // Keeps the μ where f (linear, f0 at 0 and f1 at 1) is at most 0.
-  const auto keep_nonpositive = [&](double f0, double f1) {
-    if (f0 <= 0 && f1 <= 0) return;
-    if (f0 > 0 && f1 > 0) {
-      first = 1, last = 0;
-      return;
-    }
-    const double crossing = f0 / (f0 - f1);
-    if (f0 > 0) first = std::max(first, crossing - kSlack);
-    else last = std::min(last, crossing + kSlack);
-  };
-  for (int j = 0; j < Kdop<family>::kAxes && first <= last; ++j) {
-    keep_nonpositive(a[0].lo[j] - b[0].hi[j], a[1].lo[j] - b[1].hi[j]);
-    keep_nonpositive(b[0].lo[j] - a[0].hi[j], b[1].lo[j] - a[1].hi[j]);
-  }
-  return {std::max(first, 0.0), std::min(last, 1.0)};
 }
 
 /// How far the contacts the item could find might lie outside the groups of its step (for an
@@ -648,43 +562,6 @@ void add_stats(DetectionStats& into, const DetectionStats& s) {
   into.pruned += s.pruned;
 }
 
-constexpr double kUnknownUrgency = std::numeric_limits<double>::infinity();
-
-/// Work items by urgency (a `protrusion`), most urgent first: in buckets of a factor 4 of
-/// urgency, each a stack (the last pushed first), so pushing and taking cost O(1) and the
-/// work within a bucket goes depth first; infinite urgency comes before any finite one.
-/// (Measured: finer buckets, down to an exact priority queue, do more work; one stack for all
-/// finite urgencies runs the narrow phase far more often.)
-class UrgencyQueue {
- public:
-  void push(const WorkItem& item, double urgency) {
-    const int b = bucket(urgency);
-    buckets_[b].push_back(item);
-    top_ = std::max(top_, b);
-    ++size_;
-  }
-  bool empty() const { return size_ == 0; }
-  WorkItem pop() {
-    while (buckets_[top_].empty()) --top_;
-    const WorkItem item = buckets_[top_].back();
-    buckets_[top_].pop_back();
-    --size_;
-    return item;
-  }
-
- private:
-  static constexpr int kBuckets = 128;
-  static int bucket(double urgency) {
-    if (std::isinf(urgency)) return kBuckets - 1;
-    int exponent = 0;
-    std::frexp(urgency, &exponent);  // urgency ∈ [2^(exponent − 1), 2^exponent)
-    return std::clamp(((exponent + 1) >> 1) + kBuckets / 2, 0, kBuckets - 2);  // [4^(k−1), 4^k) → k
-  }
-  std::array<std::vector<WorkItem>, kBuckets> buckets_;
-  int top_ = 0;
-  std::size_t size_ = 0;
-};
-
 /// Steps processed between two progress reports in the depth-first phase.
 constexpr std::size_t kStepsPerBatch = 16;
 
@@ -797,7 +674,7 @@ bool run_traversal(const Traversal<family>& tr, std::vector<TriangleContact>& co
     for (std::size_t i = 0; i < items.size(); ++i)
       if (i == 0 || items[i].pair != items[i - 1].pair || items[i].s0 != items[i - 1].s0) steps.push_back({i, i + 1});
       else steps.back().second = i + 1;
-    tbb::enumerable_thread_specific<UrgencyQueue> queues;
+    tbb::enumerable_thread_specific<UrgencyQueue<WorkItem>> queues;
     for (std::size_t first = 0; first < steps.size(); first += kStepsPerBatch) {
       const std::size_t end = std::min(steps.size(), first + kStepsPerBatch);
       std::vector<std::vector<LineContact>> batch_contacts(end - first);
@@ -809,7 +686,7 @@ bool run_traversal(const Traversal<family>& tr, std::vector<TriangleContact>& co
         // far (children inherit their parent's protrusion, which bounds theirs), so that the
         // contacts that make the groups' extremes come early and prune the rest; first of all
         // the items where nothing is known yet, deepest first (to find a first contact soon).
-        UrgencyQueue& queue = queues.local();  // empty, its buckets' memory kept from earlier steps
+        UrgencyQueue<WorkItem>& queue = queues.local();  // empty, its buckets' memory kept from earlier steps
         for (std::size_t i = steps[g].second; i-- > steps[g].first;) queue.push(items[i], kUnknownUrgency);
         std::vector<WorkItem> children;
         while (!queue.empty()) {

@@ -1,0 +1,106 @@
+#pragma once
+/// @file
+/// Bounds of geometry that moves linearly over one proxy step: where, and when within the step,
+/// two moving triangles or two tree nodes (given their k-DOPs at the step's ends) can meet.
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <utility>
+
+#include "reconfig/collision/kdop.h"
+
+namespace reconfig::collision::detail {
+
+/// A triangle's corners at one time.
+using MovingTriangle = std::array<Eigen::Vector3d, 3>;
+
+/// The box of a triangle moving linearly from `p0` to `p1` over the fractions [mu0, mu1] of
+/// its step.
+inline Eigen::AlignedBox3d triangle_box_at(const MovingTriangle& p0, const MovingTriangle& p1, double mu0, double mu1) {
+  Eigen::AlignedBox3d box;
+  for (int c = 0; c < 3; ++c)
+    for (double mu : {mu0, mu1}) box.extend((1 - mu) * p0[c] + mu * p1[c]);
+  return box;
+}
+
+/// The pieces k (bit k) of `kCullPieces` equal pieces of a time step where the spacetime
+/// k-DOPs of two moving triangles, A's grown by `reach`, meet: the hull of a triangle's sweep
+/// over a whole step is much looser when it moves further than its size. Axis projections
+/// of a vertex are affine in time, so they are interpolated from those at the step's ends;
+/// the time component of an axis is the same for both triangles over a piece, so only the
+/// spatial part matters.
+inline constexpr int kCullPieces = 8;
+
+template <DopFamily family>
+unsigned meeting_pieces(const MovingTriangle& a0, const MovingTriangle& a1, const MovingTriangle& b0,
+                        const MovingTriangle& b1, double reach) {
+  constexpr int K = Kdop<family>::kAxes;
+  const auto& axes = dop_axes<family>();
+  unsigned meeting = (1u << kCullPieces) - 1;
+  for (int j = 0; j < K && meeting != 0; ++j) {
+    const Eigen::Vector3d axis = axes[j].template head<3>();
+    const double grow = reach * axis.norm();
+    double pa[2][3], pb[2][3];
+    for (int c = 0; c < 3; ++c) {
+      pa[0][c] = axis.dot(a0[c]), pa[1][c] = axis.dot(a1[c]);
+      pb[0][c] = axis.dot(b0[c]), pb[1][c] = axis.dot(b1[c]);
+    }
+    // Range of each triangle's projection at each piece boundary; a piece's range spans its two ends.
+    double lo_a[kCullPieces + 1], hi_a[kCullPieces + 1], lo_b[kCullPieces + 1], hi_b[kCullPieces + 1];
+    for (int k = 0; k <= kCullPieces; ++k) {
+      const double mu = static_cast<double>(k) / kCullPieces;
+      lo_a[k] = lo_b[k] = HUGE_VAL;
+      hi_a[k] = hi_b[k] = -HUGE_VAL;
+      for (int c = 0; c < 3; ++c) {
+        const double va = (1 - mu) * pa[0][c] + mu * pa[1][c], vb = (1 - mu) * pb[0][c] + mu * pb[1][c];
+        lo_a[k] = std::min(lo_a[k], va), hi_a[k] = std::max(hi_a[k], va);
+        lo_b[k] = std::min(lo_b[k], vb), hi_b[k] = std::max(hi_b[k], vb);
+      }
+    }
+    for (int k = 0; k < kCullPieces; ++k) {
+      if (!(meeting & (1u << k))) continue;
+      const double a_lo = std::min(lo_a[k], lo_a[k + 1]) - grow, a_hi = std::max(hi_a[k], hi_a[k + 1]) + grow;
+      const double b_lo = std::min(lo_b[k], lo_b[k + 1]), b_hi = std::max(hi_b[k], hi_b[k + 1]);
+      if (a_lo > b_hi || b_lo > a_hi) meeting &= ~(1u << k);
+    }
+  }
+  return meeting;
+}
+
+/// The fractions μ ∈ [0, 1] of a step during which two nodes may meet, given their k-DOPs at
+/// the step's ends (`a`, `b`); empty (first > second) if they cannot. Along every axis a point's
+/// projection moves linearly over the step, so the lowest projection of a set of points is
+/// concave in μ (and the highest convex): it stays above the line between its values at the
+/// ends (the highest below). Where those lines of A and B leave a gap along some axis, the
+/// nodes cannot meet.
+template <DopFamily family>
+std::pair<double, double> meeting_range(const std::array<Kdop<family>, 2>& a, const std::array<Kdop<family>, 2>& b) {
+  constexpr double kSlack = 1e-9;  // absorbs the rounding of the crossing points
+  double first = 0, last = 1;
+  // Keeps the μ where f (linear, f0 at 0 and f1 at 1) is at most 0.
+  const auto keep_nonpositive = [&](double f0, double f1) {
+    if (f0 <= 0 && f1 <= 0) return;
+    if (f0 > 0 && f1 > 0) {
+      first = 1, last = 0;
+      return;
+    }
+    const double crossing = f0 / (f0 - f1);
+    if (f0 > 0) first = std::max(first, crossing - kSlack);
+    else last = std::min(last, crossing + kSlack);
+  };
+  for (int j = 0; j < Kdop<family>::kAxes && first <= last; ++j) {
+    keep_nonpositive(a[0].lo[j] - b[0].hi[j], a[1].lo[j] - b[1].hi[j]);
+    keep_nonpositive(b[0].lo[j] - a[0].hi[j], b[1].lo[j] - a[1].hi[j]);
+  }
+  return {std::max(first, 0.0), std::min(last, 1.0)};
+}
+
+/// The spatial box of a k-DOP: its first three axes are x, y and z in every family.
+template <DopFamily family>
+Eigen::AlignedBox3d spatial_box(const Kdop<family>& dop) {
+  return {Eigen::Vector3d(dop.lo[0], dop.lo[1], dop.lo[2]), Eigen::Vector3d(dop.hi[0], dop.hi[1], dop.hi[2])};
+}
+
+}  // namespace reconfig::collision::detail

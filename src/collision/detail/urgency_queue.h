@@ -1,0 +1,54 @@
+#pragma once
+/// @file
+/// The order in which the traversal takes the work of one proxy step: most urgent first.
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+namespace reconfig::collision::detail {
+
+/// The urgency of work where nothing is known yet.
+inline constexpr double kUnknownUrgency = std::numeric_limits<double>::infinity();
+
+/// Work items by urgency (how far their contacts could lie outside what is known), most urgent
+/// first: in buckets of a factor 4 of urgency, each a stack (the last pushed first), so pushing
+/// and taking cost O(1) and the work within a bucket goes depth first; infinite urgency comes
+/// before any finite one.
+/// (Measured: finer buckets, down to an exact priority queue, do more work; one stack for all
+/// finite urgencies runs the narrow phase far more often.)
+template <class Item>
+class UrgencyQueue {
+ public:
+  void push(const Item& item, double urgency) {
+    const int b = bucket(urgency);
+    buckets_[b].push_back(item);
+    top_ = std::max(top_, b);
+    ++size_;
+  }
+  bool empty() const { return size_ == 0; }
+  Item pop() {
+    while (buckets_[top_].empty()) --top_;
+    const Item item = buckets_[top_].back();
+    buckets_[top_].pop_back();
+    --size_;
+    return item;
+  }
+
+ private:
+  static constexpr int kBuckets = 128;
+  static int bucket(double urgency) {
+    if (std::isinf(urgency)) return kBuckets - 1;
+    int exponent = 0;
+    std::frexp(urgency, &exponent);  // urgency ∈ [2^(exponent − 1), 2^exponent)
+    return std::clamp(((exponent + 1) >> 1) + kBuckets / 2, 0, kBuckets - 2);  // [4^(k−1), 4^k) → k
+  }
+  std::array<std::vector<Item>, kBuckets> buckets_;
+  int top_ = 0;
+  std::size_t size_ = 0;
+};
+
+}  // namespace reconfig::collision::detail
