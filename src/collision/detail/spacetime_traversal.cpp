@@ -31,9 +31,7 @@ double smaller_diagonal(const BodyTree& a, const BodyTree& b) {
 }
 
 /// How far apart two contacts of a pair of parts in one frame may lie and still be grouped.
-double group_gap(const DetectorOptions& options, const BodyTree& a, const BodyTree& b) {
-  return options.group_gap * smaller_diagonal(a, b);
-}
+double group_gap(const DetectorOptions& options, double smaller_size) { return options.group_gap * smaller_size; }
 
 /// A proxy's placement at one time: between two samples the vertices interpolate linearly,
 /// which is an affine (not rigid) map.
@@ -270,7 +268,7 @@ struct Traversal {
     return inflated(box, pad + deviation);
   }
 
-  double gap(int pair) const { return options.group_gap * size[pair]; }
+  double gap(int pair) const { return group_gap(options, size[pair]); }
   /// The distance that counts as much as a frame's time when ordering work by how far its
   /// contacts could lie outside the groups (a fiftieth of the smaller part's size).
   double urgency_unit(int pair) const { return size[pair] / 50; }
@@ -456,7 +454,7 @@ double process(const Traversal<family>& tr, const WorkItem& item, std::vector<Wo
         if (meeting == 0) return;
         // Contacts can only lie within the pieces where the triangles may meet.
         const double from = time_at(static_cast<double>(std::countr_zero(meeting)) / kCullPieces);
-        const double to = time_at(static_cast<double>(kCullPieces - std::countl_zero(meeting << (32 - kCullPieces))) / kCullPieces);
+        const double to = time_at(static_cast<double>(std::bit_width(meeting)) / kCullPieces);
         if (protrusion(tr, step, context, box_between, from, to) == 0) {
           ++stats.pruned;
           return;
@@ -759,7 +757,7 @@ std::vector<CollisionInterval> group_contacts(const std::vector<TriangleContact>
     const auto key = std::tuple{c.part_a, c.part_b, frame_of_contact(grid, c)};
     auto at = frames.find(key);
     if (at == frames.end())
-      at = frames.emplace(key, FrameContacts(group_gap(options, *trees[c.part_a], *trees[c.part_b]))).first;
+      at = frames.emplace(key, FrameContacts(group_gap(options, smaller_diagonal(*trees[c.part_a], *trees[c.part_b])))).first;
     at->second.add(c);
   }
   std::vector<CollisionInterval> groups;
