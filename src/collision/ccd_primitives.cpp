@@ -116,6 +116,130 @@ inline bool separated_along_directions(const double f[8][3], const double d[3], 
   return false;
 }
 
+/// Boxes the search examines before it looks for a witness (below), in a "whether" query: the
+/// first box, the whole domain, already excludes far misses, and a contact would otherwise
+/// cost a descent of dozens of boxes to the tolerance.
+constexpr int kWitnessAfterBoxes = 1;
+
+double det3(const double x[3], const double y[3], const double z[3]) {
+  return x[0] * (y[1] * z[2] - y[2] * z[1]) + x[1] * (y[2] * z[0] - y[0] * z[2]) + x[2] * (y[0] * z[1] - y[1] * z[0]);
+}
+
+double cubic_at(const double c[4], double t) { return ((c[3] * t + c[2]) * t + c[1]) * t + c[0]; }
+
+/// A root of cubic c in [lo, hi], where c(lo) and c(hi) differ in sign (or one is 0):
+/// Newton's method kept inside the shrinking bracket, bisection when it strays.
+double bracketed_root(const double c[4], double lo, double hi) {
+  double f_lo = cubic_at(c, lo);
+  if (f_lo == 0) return lo;
+  double t = 0.5 * (lo + hi);
+  for (int iteration = 0; iteration < 100; ++iteration) {
+    const double f = cubic_at(c, t);
+    if (f == 0) return t;
+    if ((f < 0) == (f_lo < 0)) lo = t, f_lo = f;
+    else hi = t;
+    const double slope = (3 * c[3] * t + 2 * c[2]) * t + c[1];
+    double next = t - f / slope;
+    if (!(lo < next && next < hi)) next = 0.5 * (lo + hi);
+    if (next == t || hi - lo <= 0x1p-52 * std::max(1.0, std::abs(t))) return next;
+    t = next;
+  }
+  return t;
+}
+
+/// Candidate contact times in [lo, hi]: the roots of the coplanarity cubic c (where it
+/// changes sign between its turning points), then the turning points themselves (tangent
+/// roots), then the ends. Floating point throughout: candidates are verified by the caller.
+int contact_time_candidates(const double c[4], double lo, double hi, double out[7]) {
+  double breaks[4] = {lo, 0, 0, hi};
+  int count = 1;
+  // Turning points: roots of 3 c3 t² + 2 c2 t + c1.
+  const double qa = 3 * c[3], qb = 2 * c[2], qc = c[1];
+  double turning[2];
+  int turnings = 0;
+  if (qa != 0) {
+    const double disc = qb * qb - 4 * qa * qc;
+    if (disc >= 0) {
+      const double q = -0.5 * (qb + std::copysign(std::sqrt(disc), qb));
+      if (q != 0) turning[turnings++] = q / qa, turning[turnings++] = qc / q;
+      else turning[turnings++] = 0;
+    }
+  } else if (qb != 0) {
+    turning[turnings++] = -qc / qb;
+  }
+  if (turnings == 2 && turning[0] > turning[1]) std::swap(turning[0], turning[1]);
+  for (int k = 0; k < turnings; ++k)
+    if (lo < turning[k] && turning[k] < hi) breaks[count++] = turning[k];
+  breaks[count++] = hi;
+  int found = 0;
+  for (int k = 0; k + 1 < count; ++k) {
+    const double a = cubic_at(c, breaks[k]), b = cubic_at(c, breaks[k + 1]);
+    if ((a <= 0 && b >= 0) || (a >= 0 && b <= 0)) out[found++] = bracketed_root(c, breaks[k], breaks[k + 1]);
+  }
+  for (int k = 1; k + 1 < count; ++k) out[found++] = breaks[k];
+  out[found++] = lo;
+  out[found++] = hi;
+  return found;
+}
+
+/// Looks for a witness of a contact: a point (t, u, v) of the domain at which the computed F
+/// is within the tolerance in every coordinate. Like an accepted box of the search, it proves
+/// that at time t the exact primitives come within L∞ distance tolerance + e (the error bound)
+/// of each other. Candidates: the times where the four points are coplanar (a root of the
+/// cubic det(d, e1, e2)), where (u, v) minimize |F| and are then clamped into the domain.
+/// Returns the witness's time, or a negative number if none of the candidates is one.
+template <Kind kind>
+double contact_witness(const MovingQuad& q, const PrimitiveCcdOptions& options) {
+  double d0[3], e10[3], e20[3], d1[3], e11[3], e21[3];
+  terms_at<kind>(q, 0, d0, e10, e20);
+  terms_at<kind>(q, 1, d1, e11, e21);
+  double dd[3], de1[3], de2[3];
+  for (int i = 0; i < 3; ++i) dd[i] = d1[i] - d0[i], de1[i] = e11[i] - e10[i], de2[i] = e21[i] - e20[i];
+  const double cubic[4] = {det3(d0, e10, e20), det3(dd, e10, e20) + det3(d0, de1, e20) + det3(d0, e10, de2),
+                           det3(d0, de1, de2) + det3(dd, e10, de2) + det3(dd, de1, e20), det3(dd, de1, de2)};
+  double times[7];
+  const int candidates = contact_time_candidates(cubic, options.t_min, options.t_max, times);
+  for (int k = 0; k < candidates; ++k) {
+    const double t = std::clamp(times[k], options.t_min, options.t_max);
+    double d[3], e1[3], e2[3];
+    terms_at<kind>(q, t, d, e1, e2);
+    // Least squares for u e1 + v e2 = −d.
+    double g11 = 0, g12 = 0, g22 = 0, r1 = 0, r2 = 0;
+    for (int i = 0; i < 3; ++i) {
+      g11 += e1[i] * e1[i], g12 += e1[i] * e2[i], g22 += e2[i] * e2[i];
+      r1 -= d[i] * e1[i], r2 -= d[i] * e2[i];
+    }
+    const double det = g11 * g22 - g12 * g12;
+    if (!(det > 1e-24 * g11 * g22)) continue;  // (near) parallel: left to the search
+    double u = std::max(0.0, (r1 * g22 - r2 * g12) / det), v = std::max(0.0, (g11 * r2 - g12 * r1) / det);
+    if constexpr (kind == Kind::kVertexFace) {
+      // u + v may exceed 1 by a rounding, moving the point off the face by ≤ 2^-52 of an edge,
+      // well within the error bound.
+      if (u + v > 1) u /= u + v, v = 1 - u;
+    } else {
+      u = std::min(u, 1.0), v = std::min(v, 1.0);
+    }
+    bool near = true;
+    for (int i = 0; i < 3 && near; ++i) near = std::abs(d[i] + u * e1[i] + v * e2[i]) <= options.tolerance;
+    if (near) return t;
+  }
+  return -1;
+}
+
+/// The time F takes to change by the tolerance at most: F(t, u, v) moves by at most
+/// |Δd| + |Δe1| + |Δe2| (per coordinate, Δ over the whole step) per unit of time.
+template <Kind kind>
+double witness_refine_width(const MovingQuad& q, const PrimitiveCcdOptions& options) {
+  double d0[3], e10[3], e20[3], d1[3], e11[3], e21[3];
+  terms_at<kind>(q, 0, d0, e10, e20);
+  terms_at<kind>(q, 1, d1, e11, e21);
+  double speed = 0;
+  for (int i = 0; i < 3; ++i)
+    speed = std::max(speed, std::abs(d1[i] - d0[i]) + std::abs(e11[i] - e10[i]) + std::abs(e21[i] - e20[i]));
+  const double range = options.t_max - options.t_min;
+  return speed * range > options.tolerance ? options.tolerance / speed : range;
+}
+
 template <Kind kind>
 PrimitiveCcdResult solve(const MovingQuad& q, const PrimitiveCcdOptions& options) {
   assert(options.tolerance > 0 && options.separation >= 0);
@@ -131,10 +255,27 @@ PrimitiveCcdResult solve(const MovingQuad& q, const PrimitiveCcdOptions& options
   int size = 0;
   stack[size++] = Box{{options.t_min, 0, 0}, {options.t_max, 1, 1}, {0, 0, 0}};
 
-  double refine_width = 0;  // t-width of the first box accepted
+  double refine_width = 0;  // t-width of the first box accepted (or of a witness)
   while (size > 0) {
     Box box = stack[--size];
     if (kind == Kind::kVertexFace && box.lo[1] + box.lo[2] > 1) continue;  // outside the simplex
+    if (result.boxes == kWitnessAfterBoxes && !result.hit) {
+      // The whole domain is undecided: a contact is likely, and a witness proves one. It ends
+      // a "whether" query. An "earliest" one starts again on the time before it, less the
+      // time F takes to change by the tolerance (also the refinement's width, as after an
+      // accepted box): if that is free of contacts, its end bounds the first contact.
+      const double witness = contact_witness<kind>(q, options);
+      if (witness >= 0) {
+        result.hit = true;
+        result.toi = witness;
+        if (!options.earliest) return result;
+        refine_width = witness_refine_width<kind>(q, options);
+        result.toi = std::max(options.t_min, witness - refine_width);
+        size = 0;
+        if (result.toi > options.t_min) stack[size++] = Box{{options.t_min, 0, 0}, {result.toi, 1, 1}, {0, 0, 0}};
+        continue;
+      }
+    }
     if (result.hit) {  // looking for an earlier contact: only [t_lo, toi] matters
       if (box.lo[0] >= result.toi) continue;
       box.hi[0] = std::min(box.hi[0], result.toi);
@@ -150,11 +291,14 @@ PrimitiveCcdResult solve(const MovingQuad& q, const PrimitiveCcdOptions& options
 
     // F at the 8 corners: index c = 4·(t hi) + 2·(u hi) + (v hi).
     double f[8][3];
-    double d0[3], e10[3], e20[3];  // terms at the box's start time, kept for the direction tests
+    // Terms at one end of the box, kept for the direction tests: its start, or its end when
+    // looking for contacts before a known one (the geometry near that contact separates best).
+    double d0[3], e10[3], e20[3];
+    const int direction_end = result.hit ? 1 : 0;
     for (int ti = 0; ti < 2; ++ti) {
       double d[3], e1[3], e2[3];
       terms_at<kind>(q, ti ? box.hi[0] : box.lo[0], d, e1, e2);
-      if (ti == 0)
+      if (ti == direction_end)
         for (int i = 0; i < 3; ++i) d0[i] = d[i], e10[i] = e1[i], e20[i] = e2[i];
       for (int ui = 0; ui < 2; ++ui) {
         const double u = ui ? box.hi[1] : box.lo[1];

@@ -164,10 +164,23 @@ TEST(VertexFaceCcd, NonFiniteInputTouchesNothing) {
 TEST(VertexFaceCcd, BudgetGivesAConservativeHit) {
   PrimitiveCcdOptions options;
   options.max_boxes = 3;
-  const PrimitiveCcdResult r = still_triangle({1, 1, 1}, {1, 1, -2}).run(options);
+  // Sliding in the face's plane into the face at t = 1/5: the coplanarity cubic vanishes
+  // throughout, so no witness is found at the cubic's roots and the search runs out.
+  const PrimitiveCcdResult r = still_triangle({-1, 1, 0}, {4, 1, 0}).run(options);
   EXPECT_TRUE(r.hit);
   EXPECT_TRUE(r.budget_exhausted);
-  EXPECT_LE(r.toi, 1.0 / 3);
+  EXPECT_LE(r.toi, 1.0 / 5);
+  // A crossing whose witness is found at once: the budget then runs out proving that
+  // nothing comes before it, in an "earliest" query only.
+  options.max_boxes = 1;
+  const PrimitiveCcdResult crossing = still_triangle({1, 1, 1}, {1, 1, -2}).run(options);
+  EXPECT_TRUE(crossing.hit);
+  EXPECT_TRUE(crossing.budget_exhausted);
+  EXPECT_LE(crossing.toi, 1.0 / 3);
+  options.earliest = false;
+  const PrimitiveCcdResult whether = still_triangle({1, 1, 1}, {1, 1, -2}).run(options);
+  EXPECT_TRUE(whether.hit);
+  EXPECT_FALSE(whether.budget_exhausted);
 }
 
 // ---- edge–edge: constructed ----------------------------------------------------------------
@@ -260,10 +273,15 @@ TEST(PrimitiveCcdOracle, NoSampledContactIsMissedOnIntegerGrids) {
     }
     const PrimitiveCcdResult r = vf ? vertex_face_ccd(x[0], x[1], x[2], x[3], x[4], x[5], x[6], x[7])
                                     : edge_edge_ccd(x[0], x[1], x[2], x[3], x[4], x[5], x[6], x[7]);
+    PrimitiveCcdOptions whether;
+    whether.earliest = false;
+    const PrimitiveCcdResult w = vf ? vertex_face_ccd(x[0], x[1], x[2], x[3], x[4], x[5], x[6], x[7], whether)
+                                    : edge_edge_ccd(x[0], x[1], x[2], x[3], x[4], x[5], x[6], x[7], whether);
     if (first >= 0) {
       (vf ? sampled_vf : sampled_ee)++;
       ASSERT_TRUE(r.hit) << "trial " << trial;
       EXPECT_LE(r.toi, first / 256.0) << "trial " << trial;
+      ASSERT_TRUE(w.hit) << "trial " << trial;
     }
   }
   // The test means something only if contacts happen often enough.
@@ -284,9 +302,13 @@ TEST(PrimitiveCcdOracle, ConfigurationsSeparatedByAPlaneNeverHit) {
       const int upper = vf ? 1 : 2;  // vertex 0, or vertices 0 and 1, are lifted
       for (int end = 0; end < 2; ++end)
         for (int i = 0; i < upper; ++i) x[4 * end + i].z() = h + std::abs(coord(rng)) * (trial % 3 == 0 ? 0 : 1);
-      const PrimitiveCcdResult r = vf ? vertex_face_ccd(x[0], x[1], x[2], x[3], x[4], x[5], x[6], x[7])
-                                      : edge_edge_ccd(x[0], x[1], x[2], x[3], x[4], x[5], x[6], x[7]);
-      ASSERT_FALSE(r.hit) << "h " << h << " trial " << trial;
+      for (const bool earliest : {true, false}) {
+        PrimitiveCcdOptions options;
+        options.earliest = earliest;
+        const PrimitiveCcdResult r = vf ? vertex_face_ccd(x[0], x[1], x[2], x[3], x[4], x[5], x[6], x[7], options)
+                                        : edge_edge_ccd(x[0], x[1], x[2], x[3], x[4], x[5], x[6], x[7], options);
+        ASSERT_FALSE(r.hit) << "h " << h << " trial " << trial << " earliest " << earliest;
+      }
     }
   }
 }
@@ -312,6 +334,91 @@ TEST(PrimitiveCcdOracle, RandomCrossingsAreFoundWithTheirTime) {
     const PrimitiveCcdResult r = vertex_face_ccd(p0, f0[0], f0[1], f0[2], p1, f1[0], f1[1], f1[2]);
     ASSERT_TRUE(r.hit) << trial;
     EXPECT_LE(r.toi, ts + 1e-12) << trial;
+  }
+}
+
+/// Smallest Euclidean length of F(u, v) = d + u e1 + v e2 over the vertex–face domain (the
+/// triangle u, v ≥ 0, u + v ≤ 1) or the edge–edge one (the unit square): a convex quadratic,
+/// so its minimum is the free minimum if inside, else on the boundary, where each side is
+/// minimized by a clamped projection. Long double, for a reference well below the tolerance.
+long double smallest_f(const Vector3d& d, const Vector3d& e1, const Vector3d& e2, bool simplex) {
+  using V = Eigen::Matrix<long double, 3, 1>;
+  const V dd = d.cast<long double>(), a = e1.cast<long double>(), b = e2.cast<long double>();
+  const auto length = [&](long double u, long double v) { return (dd + u * a + v * b).norm(); };
+  // On the segment from (u0, v0) to (u1, v1): F = f0 + s g, s ∈ [0, 1].
+  const auto on_side = [&](long double u0, long double v0, long double u1, long double v1) {
+    const V f0 = dd + u0 * a + v0 * b, g = (u1 - u0) * a + (v1 - v0) * b;
+    const long double gg = g.squaredNorm();
+    const long double s = gg > 0 ? std::clamp(-f0.dot(g) / gg, 0.0L, 1.0L) : 0.0L;
+    return (f0 + s * g).norm();
+  };
+  long double best = simplex ? std::min({on_side(0, 0, 1, 0), on_side(1, 0, 0, 1), on_side(0, 1, 0, 0)})
+                             : std::min({on_side(0, 0, 1, 0), on_side(1, 0, 1, 1), on_side(1, 1, 0, 1), on_side(0, 1, 0, 0)});
+  const long double g11 = a.dot(a), g12 = a.dot(b), g22 = b.dot(b), det = g11 * g22 - g12 * g12;
+  if (det > 0) {
+    const long double r1 = -dd.dot(a), r2 = -dd.dot(b);
+    const long double u = (r1 * g22 - r2 * g12) / det, v = (g11 * r2 - g12 * r1) / det;
+    const bool inside = simplex ? u >= 0 && v >= 0 && u + v <= 1 : u >= 0 && v >= 0 && u <= 1 && v <= 1;
+    if (inside) best = std::min(best, length(u, v));
+  }
+  return best;
+}
+
+TEST(PrimitiveCcdOracle, WhetherHitsHaveANearContactAtTheirTime) {
+  // Crossings and passes at distances around the tolerance (1e-7 … 1e-5), in both kinds: a
+  // "whether" hit (a witness or an accepted box) must come with primitives within
+  // √3 (tolerance + 2e) of each other at its time `toi` (L∞ tolerance, Euclidean check).
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> coord(-1, 1), unit(0, 1);
+  PrimitiveCcdOptions options;
+  options.earliest = false;
+  int hits = 0, misses = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    std::array<Vector3d, 8> x;
+    for (int k = 0; k < 4; ++k) x[k] = Vector3d(coord(rng), coord(rng), coord(rng)), x[4 + k] = x[k] + 0.5 * Vector3d(coord(rng), coord(rng), coord(rng));
+    const bool vf = trial % 2 == 0;
+    // Put F through (near) zero at a random time: shift the first primitive by F(t*, u*, v*)
+    // minus a random offset of length 1e-7 … 1e-5 (often 0).
+    const double ts = unit(rng), us = 0.5 * unit(rng), vs = 0.5 * unit(rng);
+    const auto at = [&](int k) { return Vector3d(x[k] + ts * (x[4 + k] - x[k])); };
+    const Vector3d f = vf ? Vector3d(at(0) - at(1) - us * (at(2) - at(1)) - vs * (at(3) - at(1)))
+                          : Vector3d(at(0) + us * (at(1) - at(0)) - at(2) - vs * (at(3) - at(2)));
+    const Vector3d offset = trial % 3 == 0 ? Vector3d(Vector3d::Zero())
+                                           : Vector3d(std::pow(10.0, -7 + 2 * unit(rng)) * Vector3d(coord(rng), coord(rng), coord(rng)).normalized());
+    for (int k = 0; k < (vf ? 1 : 2); ++k) x[k] += offset - f, x[4 + k] += offset - f;
+    const PrimitiveCcdResult r = vf ? vertex_face_ccd(x[0], x[1], x[2], x[3], x[4], x[5], x[6], x[7], options)
+                                    : edge_edge_ccd(x[0], x[1], x[2], x[3], x[4], x[5], x[6], x[7], options);
+    if (!r.hit) {
+      ++misses;
+      continue;
+    }
+    ++hits;
+    const double t = r.toi;
+    ASSERT_GE(t, 0.0);
+    ASSERT_LE(t, 1.0);
+    const auto pos = [&](int k) { return Vector3d(x[k] + t * (x[4 + k] - x[k])); };
+    const long double gap = vf ? smallest_f(pos(0) - pos(1), pos(1) - pos(2), pos(1) - pos(3), true)
+                               : smallest_f(pos(0) - pos(2), pos(1) - pos(0), pos(2) - pos(3), false);
+    EXPECT_LE(gap, std::sqrt(3.0) * (options.tolerance + 1e-12)) << "trial " << trial << " t " << t;
+  }
+  // Most are hits (the offset rarely moves the contact away: the paths still cross).
+  EXPECT_GT(hits, 2000);
+  EXPECT_EQ(hits + misses, 3000);
+}
+
+TEST(PrimitiveCcdOracle, PassesJustBeyondTheToleranceMiss) {
+  // Sliding parallel at L∞ distance 2 × tolerance, in both query modes: neither the box
+  // search nor a witness may call that a contact (the bound is tolerance + 2e).
+  for (const bool earliest : {true, false}) {
+    PrimitiveCcdOptions options;
+    options.earliest = earliest;
+    const double h = 2 * options.tolerance;
+    EXPECT_FALSE(still_triangle({-1, 1, h}, {4, 1, h}).run(options).hit) << earliest;
+    EXPECT_FALSE(still_triangle({1, 1, 1}, {1, 1, h}).run(options).hit) << earliest;
+    const Vector3d a(-1, 0, 0), b(1, 0, 0);
+    EXPECT_FALSE(ee(a, b, {0, -1, h}, {0, 1, h}, a, b, {0.5, -1, h}, {0.5, 1, h}, options).hit) << earliest;
+    EXPECT_FALSE(ee(a, b, {1 + h, -1, 1}, {1 + h, 1, 1}, a, b, {1 + h, -1, -1}, {1 + h, 1, -1}, options).hit)
+        << earliest;
   }
 }
 

@@ -26,13 +26,19 @@
 ///   search has an F range of width ≤ `tolerance` in every coordinate containing 0 (up to the
 ///   error bound e and the separation s), so at one of its times the vertex is within
 ///   L∞ distance `tolerance + 2e + s` of the triangle (the edges within that of each other);
-///   or when the work budget `max_boxes` ran out (`budget_exhausted`), which is answered
-///   "hit" to stay conservative.
+///   or when a *witness* was found: a point (t, u, v) of the domain where the computed F is
+///   within `tolerance` in every coordinate, so the exact F within `tolerance + e` (found by
+///   floating-point root finding on the coplanarity cubic and a least-squares (u, v), tried
+///   once the first box, the whole domain, is not excluded); or when the work budget
+///   `max_boxes` ran out (`budget_exhausted`), which is answered "hit" to stay conservative.
 /// - **Earliest contact.** With `earliest` (the default), `toi` is a lower bound on the
 ///   earliest contact time: no contact happens in [t_min, toi). After the first hit, the
-///   boxes still waiting are cut at the current `toi` and halved in time only, until each is
-///   excluded or as short as the first accepted box (whose start then bounds `toi`): tight to
-///   about `tolerance` / (relative speed) when the motion, not the (u, v) extent, decides.
+///   boxes still waiting are cut at the current `toi` and halved until each is excluded or as
+///   short as the first accepted box (whose start then bounds `toi`): tight to about
+///   `tolerance` / (relative speed) when the motion, not the (u, v) extent, decides. After a
+///   witness at t*, the search starts again on [t_min, t* − w], w the time F needs to change
+///   by `tolerance`, with its direction tests taken at each box's end (the geometry nearest
+///   the known contact separates best), so a simple crossing is settled in a few boxes.
 /// - **Robust "no".** A "no" is certified with a margin: it stays "no" when every vertex
 ///   position is perturbed by up to `robust_perturbation` of the scale (see below). The
 ///   triangle-pair narrow phase relies on this to evaluate static tests at rounded positions.
@@ -60,8 +66,8 @@ struct PrimitiveCcdOptions {
   /// Work budget: boxes examined before giving up with a conservative hit.
   int max_boxes = 1'000'000;
   /// Keep searching after the first hit for the earliest one (a tight `toi`). Without it the
-  /// search stops at the first box accepted, and `toi` is that box's start (still a time
-  /// with a near-contact, but not a lower bound on the first contact).
+  /// search stops at the first witness or box accepted, and `toi` is the witness's time or
+  /// that box's start (a time with a near-contact, but not a lower bound on the first one).
   bool earliest = true;
 };
 
@@ -69,7 +75,7 @@ struct PrimitiveCcdOptions {
 struct PrimitiveCcdResult {
   bool hit = false;  ///< the primitives may touch in [t_min, t_max] (never false if they do)
   /// When `hit`: a lower bound on the earliest contact time (t_min ≤ toi ≤ first contact) if
-  /// `earliest`, else the start of the first box accepted; t_max when there is no hit.
+  /// `earliest`, else a time with a near-contact (see `earliest`); t_max when there is no hit.
   double toi = 1;
   int boxes = 0;                 ///< boxes examined (work measure)
   bool budget_exhausted = false; ///< `hit` was forced by the `max_boxes` budget
