@@ -20,9 +20,6 @@ constexpr unsigned kAllTests = (1u << kContactTests) - 1;
 /// Pieces longer than this (fraction of the step) are split wherever the coplanarity filter
 /// cannot exclude a contact, without running the contact tests.
 constexpr double kScreenedWidth = 1.0 / 32;
-/// Boxes a contact test may examine over the whole step before it is left to the halving:
-/// enough to exclude a primitive pair that passes far from contact.
-constexpr int kGlanceBoxes = 4;
 
 /// A piece of the (normalized) step, the contact tests that may still fire on it and where
 /// their coplanarity cubics over it are stored: one per test, in the order of the tests,
@@ -103,9 +100,9 @@ TrianglePairCcdResult triangle_pair_ccd(const TrianglePairCcdRequest& request) {
 
   // Contact tests whose points never become coplanar on a piece are skipped outright
   // (`coplanarity_cubic.h`). A long piece where some may (strictly inside it) is halved
-  // without running them (a contact test that finds its contact costs far more than a
-  // halving) after a glance at the whole step; below `kScreenedWidth` they decide, as they
-  // stop the refinement around false roots.
+  // without running them (a contact test that cannot exclude its contact at once costs far
+  // more than a halving); below `kScreenedWidth` they decide, as they stop the refinement
+  // around false roots.
   if (boxes_apart(motion, 0, 1, box_margin)) {  // apart throughout: no cubic needed
     result.pieces = 1;
     return result;
@@ -128,8 +125,6 @@ TrianglePairCcdResult triangle_pair_ccd(const TrianglePairCcdRequest& request) {
   options.tolerance = request.distance_tolerance;
   options.max_boxes = request.max_boxes;
   options.earliest = false;  // only whether, not when: the bisection finds the times
-  PrimitiveCcdOptions glance = options;  // on the whole step: drops far misses at once
-  glance.max_boxes = kGlanceBoxes;
 
   std::vector<TimeInterval> found;  // in normalized time
   while (next < queue.size()) {
@@ -175,12 +170,6 @@ TrianglePairCcdResult triangle_pair_ccd(const TrianglePairCcdRequest& request) {
       ++result.contact_tests;
       if (may_touch(motion, index, piece.lo, piece.hi, options)) firing |= 1u << index;
     }
-    if (piece.lo == 0 && piece.hi == 1)  // a glance at the whole step: out of budget is "may"
-      for (int index = 0; index < kContactTests; ++index) {
-        if (!(firing & ~screened & (1u << index))) continue;
-        ++result.contact_tests;
-        if (!may_touch(motion, index, 0, 1, glance)) firing &= ~(1u << index);
-      }
     if (firing == 0) {
       // No contact anywhere on the closed piece: one status throughout, robust to rounding.
       if (intersect_at(motion, mid)) found.push_back({piece.lo, piece.hi});

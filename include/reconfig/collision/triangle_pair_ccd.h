@@ -14,9 +14,9 @@
 /// certified robust to that rounding. A contact needs its four points coplanar, so a cheap
 /// certified bound on that cubic (`coplanarity_cubic.h`) rules out most of the 15 tests on
 /// most pieces; a piece longer than 1/32 of the step where some cubic may vanish strictly
-/// inside is halved without running its contact test (after a cheap glance at the whole step
-/// that drops far misses), shorter pieces (and cubics vanishing at a piece's end) run the
-/// contact tests (`ccd_primitives.h`); a piece where a contact may occur
+/// inside is halved without running its contact test, shorter pieces (and cubics vanishing
+/// at a piece's end) run the contact tests (`ccd_primitives.h`); a piece where a contact may
+/// occur
 /// is halved until it is shorter than the time tolerance, and then reported whole if it holds
 /// an intersection: if the static test says so at one of its ends, else if a contact test
 /// still fires (the status is otherwise the ends' throughout).
