@@ -14,23 +14,27 @@
 namespace reconfig::collision {
 namespace {
 
+/// The box of a part's placed bounding box at time t of its proxy (the box of the placed
+/// corners): it holds every placed vertex.
+Eigen::AlignedBox3d placed_box(const BodyTrees& trees, const std::vector<PartProxy>& proxies, int part, double t) {
+  const BodyTree::Node& root = trees[part]->node(BodyTree::kRoot);
+  Eigen::MatrixX3d corners(8, 3);
+  for (int c = 0; c < 8; ++c)
+    for (int axis = 0; axis < 3; ++axis) corners(c, axis) = root.center[axis] + ((c >> axis) & 1 ? 1 : -1) * root.half[axis];
+  return geometry::bounding_box(detail::proxy_points(proxies[part], corners, t));
+}
+
 /// Whether part `inner` lies inside part `outer` at time t of their proxies, their surfaces
 /// not crossing then: one vertex of each of its components lies inside `outer`'s solid. The
-/// whole outer mesh is posed only if those vertices lie within its (placed) bounding box.
+/// whole outer mesh is posed only if those vertices lie within `outer_box`, its placed box.
 bool nested(const scene::Reconfigurable& scene, const BodyTrees& trees, const std::vector<PartProxy>& proxies, int inner,
-            int outer, double t) {
+            int outer, double t, const Eigen::AlignedBox3d& outer_box) {
   const std::vector<int>& probes = trees[inner]->component_vertices();
   Eigen::MatrixX3d rest(static_cast<Eigen::Index>(probes.size()), 3);
   for (std::size_t i = 0; i < probes.size(); ++i) rest.row(static_cast<Eigen::Index>(i)) = scene.parts[inner].mesh.V.row(probes[i]);
   const Eigen::MatrixX3d points = detail::proxy_points(proxies[inner], rest, t);
-  // The outer part's box, placed: the box of its placed corners holds every placed vertex.
-  const BodyTree::Node& root = trees[outer]->node(BodyTree::kRoot);
-  Eigen::MatrixX3d corners(8, 3);
-  for (int c = 0; c < 8; ++c)
-    for (int axis = 0; axis < 3; ++axis) corners(c, axis) = root.center[axis] + ((c >> axis) & 1 ? 1 : -1) * root.half[axis];
-  const Eigen::AlignedBox3d reach = geometry::bounding_box(detail::proxy_points(proxies[outer], corners, t));
   for (Eigen::Index i = 0; i < points.rows(); ++i)
-    if (!reach.contains(points.row(i).transpose())) return false;
+    if (!outer_box.contains(points.row(i).transpose())) return false;
   const geometry::Mesh posed{detail::proxy_vertices(scene, proxies[outer], outer, t), scene.parts[outer].mesh.F};
   for (Eigen::Index i = 0; i < points.rows(); ++i)
     if (!geometry::point_in_solid(posed, points.row(i).transpose())) return false;
@@ -126,7 +130,14 @@ bool SpacetimeDetector::traverse(const scene::Reconfigurable& scene, const BodyT
   groups_ = detail::group_contacts(contacts_, options_, trees);
 
   if (options_.detect_containment) {
-    // Nesting can only change when surfaces cross: test once per contact-free stretch.
+    // Nesting can only change when surfaces cross: test once per contact-free stretch, at its
+    // middle, where the parts' placed boxes must overlap (those are shared by all pairs).
+    std::map<std::pair<int, double>, Eigen::AlignedBox3d> boxes;
+    const auto box_at = [&](int part, double t) -> const Eigen::AlignedBox3d& {
+      auto at = boxes.find({part, t});
+      if (at == boxes.end()) at = boxes.emplace(std::pair{part, t}, placed_box(trees, proxies_, part, t)).first;
+      return at->second;
+    };
     std::set<std::pair<int, int>> pairs;
     for (const PairRange& w : work) pairs.insert({w.a, w.b});
     for (const auto& [a, b] : pairs) {
@@ -144,8 +155,9 @@ bool SpacetimeDetector::traverse(const scene::Reconfigurable& scene, const BodyT
       for (const auto& [t0, t1] : free) {
         ++stats_.containment_tests;
         const double t = (t0 + t1) / 2;
+        if (!box_at(a, t).intersects(box_at(b, t))) continue;
         for (const auto& [inner, outer] : {std::pair{a, b}, std::pair{b, a}}) {
-          if (!nested(scene, trees, proxies_, inner, outer, t)) continue;
+          if (!nested(scene, trees, proxies_, inner, outer, t, box_at(outer, t))) continue;
           Containment containment{inner, outer, t0, t1, {}};
           // The proxy is linear between its samples: its box over [t0, t1] is that of its
           // positions at t0, t1 and the samples between.
