@@ -94,22 +94,47 @@ PairTimeline make_timeline(const std::vector<PartProxy>& proxies, int a, int b, 
   return line;
 }
 
+/// The k-DOP axes of a family seen from a part's rest frame at one placement: row j of U is
+/// u_j = Lᵀ ds_j (ds_j the spatial part of axis j), so that axis j of a rest point v measures
+/// U v + offset; `reach` = |U| (entrywise), for boxes; offset_j = ds_j·x + dt_j τ.
+template <DopFamily family>
+struct SampleAxes {
+  static constexpr int K = Kdop<family>::kAxes;
+  using Axes = Eigen::Matrix<double, K, 1>;
+  Eigen::Matrix<double, K, 3> U, reach;
+  Axes offset;
+
+  /// The axes at placement `m`, at time `t`.
+  SampleAxes(const Affine& m, double t) {
+    const auto& dirs = dop_axes<family>();
+    for (int j = 0; j < K; ++j) {
+      const Eigen::Vector3d ds = dirs[j].template head<3>();
+      U.row(j) = (m.L.transpose() * ds).transpose();
+      offset[j] = ds.dot(m.x) + dirs[j][3] * t;
+    }
+    reach = U.cwiseAbs();
+  }
+
+  /// The extents [lo, hi] of a rest-frame box (center, half extents) along every axis.
+  std::pair<Axes, Axes> box_extents(const Eigen::Vector3d& center, const Eigen::Vector3d& half) const {
+    const Axes middle = U * center + offset, spread = reach * half;
+    return {middle - spread, middle + spread};
+  }
+  EIGEN_MAKE_ALIGNED_OPERATOR_NEW
+};
+
 /// The spacetime k-DOP of a part's whole box (its tree's root) over [t0, t1] of its proxy,
 /// padded by `pad` and grown by `deviation`: that of its placements at t0, t1 and at the
 /// samples between, as the box's corners move linearly in between (see `Traversal::bound`).
 template <DopFamily family>
 Kdop<family> sweep_bound(const PartProxy& proxy, const BodyTree& tree, double t0, double t1, double pad, double deviation) {
-  const auto& axes = dop_axes<family>();
   const BodyTree::Node& root = tree.node(BodyTree::kRoot);
   Kdop<family> dop;
   const auto add = [&](double t) {
-    const Affine m = proxy_map(proxy, t);
+    const auto [lo, hi] = SampleAxes<family>(proxy_map(proxy, t), t).box_extents(root.center, root.half);
     for (int j = 0; j < Kdop<family>::kAxes; ++j) {
-      const Eigen::Vector3d ds = axes[j].template head<3>();
-      const Eigen::Vector3d u = m.L.transpose() * ds;
-      const double center = u.dot(root.center) + ds.dot(m.x) + axes[j][3] * t, reach = u.cwiseAbs().dot(root.half);
-      dop.lo[j] = std::min(dop.lo[j], center - reach - pad);
-      dop.hi[j] = std::max(dop.hi[j], center + reach + pad);
+      dop.lo[j] = std::min(dop.lo[j], lo[j] - pad);
+      dop.hi[j] = std::max(dop.hi[j], hi[j] + pad);
     }
   };
   add(t0);
@@ -147,15 +172,8 @@ struct Traversal {
   const DetectorOptions& options;
   const FrameGrid grid;
   std::vector<PairTimeline> lines;
-  /// Per pair, side and sample: row i of U is u_i = Lᵀ ds_i (ds_i the spatial part of axis i),
-  /// so that axis i of a rest point v measures U v + offset; `reach` = |U| (entrywise), for
-  /// boxes; offset_i = ds_i·x + dt_i τ.
-  struct SampleAxes {
-    Eigen::Matrix<double, K, 3> U, reach;
-    Eigen::Matrix<double, K, 1> offset;
-    EIGEN_MAKE_ALIGNED_OPERATOR_NEW
-  };
-  std::vector<std::array<std::vector<SampleAxes, Eigen::aligned_allocator<SampleAxes>>, 2>> axes;
+  /// Per pair, side and sample: the axes seen from the part's rest frame.
+  std::vector<std::array<std::vector<SampleAxes<family>, Eigen::aligned_allocator<SampleAxes<family>>>, 2>> axes;
   double pad = 0;  ///< absolute padding against rounding in bound arithmetic (`rounding_pad`)
   std::vector<double> size;  ///< per pair: the smaller part's size (box diagonal)
   /// Per pair and step: the frames the step overlaps (`FrameGrid::frames_overlapping`).
@@ -164,21 +182,10 @@ struct Traversal {
   Traversal(const scene::Reconfigurable& s, const BodyTrees& t, const std::vector<PartProxy>& p,
             const DetectorOptions& o, std::vector<PairTimeline> l, double rounding)
       : scene(s), trees(t), proxies(p), options(o), grid(o.frame), lines(std::move(l)), pad(rounding) {
-    const auto& dirs = dop_axes<family>();
     axes.resize(lines.size());
     for (std::size_t i = 0; i < lines.size(); ++i)
       for (int side = 0; side < 2; ++side)
-        for (std::size_t k = 0; k < lines[i].times.size(); ++k) {
-          const Affine& m = lines[i].maps[side][k];
-          SampleAxes sample;
-          for (int j = 0; j < K; ++j) {
-            const Eigen::Vector3d ds = dirs[j].template head<3>();
-            sample.U.row(j) = (m.L.transpose() * ds).transpose();
-            sample.offset[j] = ds.dot(m.x) + dirs[j][3] * lines[i].times[k];
-          }
-          sample.reach = sample.U.cwiseAbs();
-          axes[i][side].push_back(sample);
-        }
+        for (std::size_t k = 0; k < lines[i].times.size(); ++k) axes[i][side].emplace_back(lines[i].maps[side][k], lines[i].times[k]);
     for (std::size_t i = 0; i < lines.size(); ++i) {
       size.push_back(smaller_diagonal(tree(static_cast<int>(i), 0), tree(static_cast<int>(i), 1)));
       step_frames.emplace_back();
@@ -221,8 +228,8 @@ struct Traversal {
       }
     } else {
       for (int s = s0; s <= s1; ++s) {
-        const Axes center = samples[s].U * node.center + samples[s].offset, reach = samples[s].reach * node.half;
-        add(s, center - reach, center + reach);
+        const auto [low, high] = samples[s].box_extents(node.center, node.half);
+        add(s, low, high);
       }
     }
     for (int j = 0; j < K; ++j) {
