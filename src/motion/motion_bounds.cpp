@@ -88,28 +88,24 @@ double operator_norm(const Eigen::Matrix3d& M) {
 
 double lerp_weight(double t, double t0, double t1) { return t1 > t0 ? (t - t0) / (t1 - t0) : 0.0; }
 
-/// Shared bookkeeping: the part's center follows xc(t), its frame turns by R(t).
-/// Each piece [a, b] reports a bound on its own chord deviation; this adds the (linear)
-/// difference between piece chords and the interval chord, measured at the breakpoints.
-double chord_to_chord_center(const std::vector<double>& bps, const auto& xc, double t0,
-                             double t1, std::size_t i) {
-  const Eigen::Vector3d x0 = xc(t0), x1 = xc(t1);
-  auto gap = [&](double t) {
-    const double w = lerp_weight(t, t0, t1);
-    return (xc(t) - ((1 - w) * x0 + w * x1)).norm();
-  };
-  return std::max(gap(bps[i]), gap(bps[i + 1]));
+/// Shared bookkeeping: the part's center follows xc(t), its frame turns by R(t), given at the
+/// breakpoints `bps` of [t0, t1] (the first is t0, the last t1). Each piece [a, b] reports a
+/// bound on its own chord deviation; this adds the (linear) difference between piece chords
+/// and the interval chord, measured at the breakpoints: per breakpoint, how far the path is
+/// there from the interval's chord (`distance` of the difference: a norm).
+template <class Value, class Distance>
+std::vector<double> chord_gaps(const std::vector<double>& bps, const std::vector<Value>& path, Distance distance) {
+  const double t0 = bps.front(), t1 = bps.back();
+  std::vector<double> gaps;
+  gaps.reserve(bps.size());
+  for (std::size_t k = 0; k < bps.size(); ++k) {
+    const double w = lerp_weight(bps[k], t0, t1);
+    gaps.push_back(distance(Value(path[k] - ((1 - w) * path.front() + w * path.back()))));
+  }
+  return gaps;
 }
 
-double chord_to_chord_rotation(const std::vector<double>& bps, const auto& rot, double t0,
-                               double t1, std::size_t i) {
-  const Eigen::Matrix3d R0 = rot(t0), R1 = rot(t1);
-  auto gap = [&](double t) {
-    const double w = lerp_weight(t, t0, t1);
-    return operator_norm(rot(t) - ((1 - w) * R0 + w * R1));
-  };
-  return std::max(gap(bps[i]), gap(bps[i + 1]));
-}
+double center_distance(const Eigen::Vector3d& v) { return v.norm(); }
 
 }  // namespace
 
@@ -123,8 +119,10 @@ MotionBound keyframed_motion_bound(const BezierTranslationTrack& translation,
   // Translation.
   const std::vector<double>& xt = translation.key_times();
   const std::vector<double> xb = breakpoints(xt, t0, t1);
-  const auto x = [&](double t) { return translation.evaluate(t); };
-  const Eigen::Vector3d x_start = x(t0);
+  std::vector<Eigen::Vector3d> x;
+  for (double t : xb) x.push_back(translation.evaluate(t));
+  const std::vector<double> x_gaps = chord_gaps(xb, x, center_distance);
+  const Eigen::Vector3d& x_start = x.front();
   double x_dev = 0.0, x_disp = 0.0;
   for (std::size_t i = 0; i + 1 < xb.size(); ++i) {
     const PieceSegment ps = piece_segment(xt, xb[i], xb[i + 1]);
@@ -139,9 +137,9 @@ MotionBound keyframed_motion_bound(const BezierTranslationTrack& translation,
       own = cubic_hump_max(a, b);
       for (const Eigen::Vector3d& q : Q) x_disp = std::max(x_disp, (q - x_start).norm());
     } else {
-      x_disp = std::max(x_disp, (x(xb[i]) - x_start).norm());
+      x_disp = std::max(x_disp, (x[i] - x_start).norm());
     }
-    x_dev = std::max(x_dev, own + chord_to_chord_center(xb, x, t0, t1, i));
+    x_dev = std::max(x_dev, own + std::max(x_gaps[i], x_gaps[i + 1]));
   }
 
   // Rotation.
@@ -149,7 +147,9 @@ MotionBound keyframed_motion_bound(const BezierTranslationTrack& translation,
   if (radius > 0.0) {
     const std::vector<double>& rt = rotation.key_times();
     const std::vector<double> rb = breakpoints(rt, t0, t1);
-    const auto rot = [&](double t) { return Eigen::Matrix3d(rotation.evaluate(t).toRotationMatrix()); };
+    std::vector<Eigen::Matrix3d> frames;
+    for (double t : rb) frames.push_back(rotation.evaluate(t).toRotationMatrix());
+    const std::vector<double> r_gaps = chord_gaps(rb, frames, operator_norm);
     for (std::size_t i = 0; i + 1 < rb.size(); ++i) {
       const PieceSegment ps = piece_segment(rt, rb[i], rb[i + 1]);
       double own = 0.0;
@@ -158,7 +158,7 @@ MotionBound keyframed_motion_bound(const BezierTranslationTrack& translation,
         own = detail::arc_chord_deviation(psi);
         turned += psi;
       }
-      r_dev = std::max(r_dev, own + chord_to_chord_rotation(rb, rot, t0, t1, i));
+      r_dev = std::max(r_dev, own + std::max(r_gaps[i], r_gaps[i + 1]));
     }
   }
   out.deviation = x_dev + radius * r_dev;
@@ -173,9 +173,16 @@ MotionBound screw_motion_bound(const ScrewTrack& track, double radius, double t0
   const Eigen::Vector3d& c = track.center();
   const std::vector<double>& st = track.key_times();
   const std::vector<double> sb = breakpoints(st, t0, t1);
-  const auto xc = [&](double t) { return Eigen::Vector3d(track.at(t) * c); };
-  const auto rot = [&](double t) { return Eigen::Matrix3d(track.at(t).linear()); };
-  const Eigen::Vector3d x_start = xc(t0);
+  std::vector<Eigen::Vector3d> centers;
+  std::vector<Eigen::Matrix3d> frames;
+  for (double t : sb) {
+    const Eigen::Isometry3d pose = track.at(t);
+    centers.push_back(pose * c);
+    frames.push_back(pose.linear());
+  }
+  const std::vector<double> x_gaps = chord_gaps(sb, centers, center_distance);
+  const std::vector<double> r_gaps = radius > 0.0 ? chord_gaps(sb, frames, operator_norm) : std::vector<double>();
+  const Eigen::Vector3d& x_start = centers.front();
 
   double x_dev = 0.0, r_dev = 0.0, x_disp = 0.0, turned = 0.0;
   for (std::size_t i = 0; i + 1 < sb.size(); ++i) {
@@ -201,9 +208,9 @@ MotionBound screw_motion_bound(const ScrewTrack& track, double radius, double t0
       arc = std::hypot(m.distance(), rho_b) * df;
       turned += psi;
     }
-    x_dev = std::max(x_dev, own_x + chord_to_chord_center(sb, xc, t0, t1, i));
-    if (radius > 0.0) r_dev = std::max(r_dev, own_r + chord_to_chord_rotation(sb, rot, t0, t1, i));
-    x_disp = std::max(x_disp, (xc(sb[i]) - x_start).norm() + arc);
+    x_dev = std::max(x_dev, own_x + std::max(x_gaps[i], x_gaps[i + 1]));
+    if (radius > 0.0) r_dev = std::max(r_dev, own_r + std::max(r_gaps[i], r_gaps[i + 1]));
+    x_disp = std::max(x_disp, (centers[i] - x_start).norm() + arc);
   }
   out.deviation = x_dev + radius * r_dev;
   out.displacement = x_disp + radius * 2.0 * std::sin(0.5 * std::min(turned, M_PI));
