@@ -1,4 +1,4 @@
-// The main menu: File (open, save, save as, quit), Edit (undo, redo), View, Transitions.
+// The main menu: File (open, save, save as, quit), Edit (undo, redo), View, Collisions, Transitions.
 
 #include "studio.h"
 
@@ -30,6 +30,10 @@ void Studio::draw_menu_bar() {
     if (ImGui::MenuItem("Frame all", "F")) frame_all();
     ImGui::MenuItem("Ghosts", nullptr, &show_ghosts);
     ImGui::MenuItem("Collision boxes", nullptr, &show_intervals);
+    ImGui::EndMenu();
+  }
+  if (ImGui::BeginMenu("Collisions")) {
+    if (ImGui::MenuItem("Settings...")) show_collision_settings();
     ImGui::EndMenu();
   }
   if (document_ && ImGui::BeginMenu("Transitions")) {

@@ -98,6 +98,7 @@ void Studio::frame(std::chrono::steady_clock::time_point now) {
   draw_timeline();
   draw_status_bar();
   draw_modals();
+  draw_collision_settings();
   if (document_) {
     std::string problem = document_->autosave_if_due(now, options_.autosave_interval);
     if (!problem.empty()) set_status(std::move(problem), true);

@@ -97,6 +97,13 @@ class Studio {
   void frame_all();
   /// Executes a scene command as one undoable step; refusals go to the status line.
   bool execute(std::unique_ptr<scene::Command> command);
+  /// How collisions are detected (tolerance, k-DOP family, box grid, conservative mode), for
+  /// the open design and those opened later: detection starts over. Settings out of range are
+  /// refused (the reason goes to the status line). @return success
+  bool set_detector_options(const collision::DetectorOptions& options);
+  const collision::DetectorOptions& detector_options() const { return options_.collisions.detector; }
+  /// Opens the Collisions > Settings window (edits apply with its Apply button).
+  void show_collision_settings();
 
   // ---- what the UI shows (for tests and scripts) ----------------------------------------
   int active_transition() const { return active_transition_; }
@@ -135,6 +142,7 @@ class Studio {
   void draw_timeline();
   void draw_status_bar();
   void draw_modals();
+  void draw_collision_settings();
   void handle_shortcuts();
 
   // Viewport helpers.
@@ -201,6 +209,8 @@ class Studio {
   std::filesystem::path recovery_candidate_;
   std::string open_path_input_, save_path_input_;
   bool show_open_dialog_ = false, show_save_as_dialog_ = false, confirm_close_ = false;
+  /// The settings being edited in the Collisions > Settings window, while it is open.
+  std::optional<collision::DetectorOptions> settings_draft_;
   bool quit_ = false;
 };
 

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 
 #include "keys.h"
@@ -269,6 +270,48 @@ TEST_F(StudioHeadless, ABadFileIsAMessageNotACrash) {
   frontend_->run_frame();
   EXPECT_FALSE(studio().open(scene_file_.parent_path() / "missing.json"));
   frontend_->run_frame();
+}
+
+TEST_F(StudioHeadless, CollisionSettingsDetectAgainAndBadOnesAreRefused) {
+  const int unfold = studio().document()->scene().find_transition("unfold");
+  ASSERT_GE(unfold, 0);
+  studio().open_transition(unfold);
+  frontend_->run_frame();
+  const std::vector<collision::CollisionInterval> before = shown(unfold).frames;
+  ASSERT_FALSE(before.empty());  // the unfold choreography collides
+
+  collision::DetectorOptions bad = studio().detector_options();
+  bad.tolerance = -1;
+  EXPECT_FALSE(studio().set_detector_options(bad));
+  EXPECT_NE(studio().status().find("tolerance"), std::string::npos) << studio().status();
+  EXPECT_EQ(studio().detector_options().tolerance, collision::DetectorOptions{}.tolerance);
+
+  // Exact boxes (and box-shaped bounds): the same collisions, each frame's box within the
+  // rounded one shown before, some strictly smaller.
+  collision::DetectorOptions exact = studio().detector_options();
+  exact.box_resolution = 0;
+  exact.dop = collision::DopFamily::k8;
+  ASSERT_TRUE(studio().set_detector_options(exact)) << studio().status();
+  EXPECT_EQ(studio().document()->collision_options().detector.box_resolution, 0.0);
+  ASSERT_TRUE(frontend_->run_until_collisions_current(milliseconds(60000)));
+  const std::vector<collision::CollisionInterval> after = shown(unfold).frames;
+  ASSERT_EQ(after.size(), before.size());
+  bool smaller = false;
+  for (std::size_t i = 0; i < after.size(); ++i) {
+    EXPECT_EQ(after[i].parts, before[i].parts);
+    EXPECT_EQ(after[i].t0, before[i].t0);
+    EXPECT_EQ(after[i].t1, before[i].t1);
+    EXPECT_TRUE(before[i].box.contains(after[i].box)) << "frame group " << i;
+    smaller = smaller || !after[i].box.isApprox(before[i].box);
+  }
+  EXPECT_TRUE(smaller);
+
+  // The settings window edits a draft: the settings in use change only with its Apply button.
+  studio().show_collision_settings();
+  frontend_->run_frame();
+  frontend_->run_frame();
+  EXPECT_EQ(studio().detector_options().dop, collision::DopFamily::k8);
+  EXPECT_EQ(studio().detector_options().box_resolution, 0.0);
 }
 
 TEST_F(StudioHeadless, RefusedEditsLeaveTheDesignUntouched) {

@@ -1,0 +1,91 @@
+// Collisions > Settings: how the collision service detects (tolerance, k-DOP family, box grid,
+// frame length, conservative mode), edited in a small window and applied to the open design.
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "studio.h"
+
+namespace reconfig::studio {
+namespace {
+
+/// Why the settings cannot be used, or "" if they can.
+std::string settings_problem(const collision::DetectorOptions& options) {
+  if (!(options.tolerance > 0) || !std::isfinite(options.tolerance)) return "the tolerance must be a positive distance";
+  if (!(options.box_resolution >= 0 && options.box_resolution <= 1))
+    return "the box grid must be between 0 (exact boxes) and 100 % of a part's size";
+  if (!(options.frame > 0 && options.frame <= 1)) return "a frame must last more than 0 and at most the whole transition";
+  return "";
+}
+
+constexpr collision::DopFamily kFamilies[] = {collision::DopFamily::k8, collision::DopFamily::k28, collision::DopFamily::k80};
+constexpr const char* kFamilyNames[] = {"8-DOP (boxes)", "28-DOP", "80-DOP"};
+constexpr int kFamilyAxes[] = {8, 28, 80};
+
+int family_index(collision::DopFamily family) {
+  for (int i = 0; i < 3; ++i)
+    if (kFamilies[i] == family) return i;
+  return 1;
+}
+
+std::string describe(const collision::DetectorOptions& options) {
+  return fmt::format("tolerance {:g}, {}-DOP, {}, frames of {:g}{}", options.tolerance,
+                     kFamilyAxes[family_index(options.dop)],
+                     options.box_resolution > 0 ? fmt::format("box grid {:g} %", 100 * options.box_resolution)
+                                                : std::string("exact boxes"),
+                     options.frame, options.conservative ? ", conservative" : "");
+}
+
+void hint(const char* text) {
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text);
+}
+
+}  // namespace
+
+bool Studio::set_detector_options(const collision::DetectorOptions& options) {
+  if (const std::string problem = settings_problem(options); !problem.empty()) {
+    set_status(fmt::format("collision settings not changed: {}", problem), true);
+    return false;
+  }
+  options_.collisions.detector = options;
+  if (document_) document_->set_collision_options(options_.collisions);
+  set_status(fmt::format("collision settings: {}", describe(options)));
+  return true;
+}
+
+void Studio::show_collision_settings() { settings_draft_ = options_.collisions.detector; }
+
+void Studio::draw_collision_settings() {
+  if (!settings_draft_) return;
+  bool open = true;
+  ImGui::SetNextWindowPos(ImVec2(layout_.viewport_min.x + 24, layout_.viewport_min.y + 48), ImGuiCond_Appearing);
+  if (ImGui::Begin("Collision settings", &open, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse)) {
+    collision::DetectorOptions& draft = *settings_draft_;
+    ImGui::SetNextItemWidth(160);
+    ImGui::InputDouble("Tolerance", &draft.tolerance, 0, 0, "%.6g");
+    hint("Largest distance between the sampled motion and the true one, in scene units.\n"
+         "Smaller: more time samples, slower detection.");
+    int family = family_index(draft.dop);
+    ImGui::SetNextItemWidth(160);
+    if (ImGui::Combo("Bounding volumes", &family, kFamilyNames, 3)) draft.dop = kFamilies[family];
+    hint("The k-DOP family of the spacetime hierarchies: 28 is usually fastest.");
+    double percent = 100 * draft.box_resolution;
+    ImGui::SetNextItemWidth(160);
+    if (ImGui::InputDouble("Box grid (% of part size)", &percent, 0, 0, "%.4g")) draft.box_resolution = percent / 100;
+    hint("Collision boxes are rounded outward to a grid of this size; 0 gives exact boxes (slower on deep overlaps).");
+    ImGui::SetNextItemWidth(160);
+    ImGui::InputDouble("Frame (fraction of a transition)", &draft.frame, 0, 0, "%.4g");
+    hint("The 3D view's boxes cover at most one frame of time each.");
+    ImGui::Checkbox("Conservative", &draft.conservative);
+    hint("Also report near misses that the true motion (between the samples) may turn into collisions:\n"
+         "no collision is ever missed, at the price of some that are not there.");
+    if (ImGui::Button("Apply")) set_detector_options(draft);
+    ImGui::SameLine();
+    if (ImGui::Button("Close")) open = false;
+  }
+  ImGui::End();
+  if (!open) settings_draft_.reset();
+}
+
+}  // namespace reconfig::studio
