@@ -88,8 +88,10 @@ std::vector<CcdQuery> parse_ccd_queries(std::istream& in, const std::string& fil
       if (den == 0) fail(file_name, line, std::string(kFields[2 * axis + 1]) + " is zero");
       mpq_class q(field[2 * axis], den);
       q.canonicalize();
+      // Checked exactly, before the conversion: beyond the doubles' range it is undefined.
+      static const mpq_class kLimit(mpz_class(1) << 1000);
       double error = 0;
-      const double x = to_double(q, error);
+      const double x = abs(q) < kLimit ? to_double(q, error) : HUGE_VAL;
       if (!(std::abs(x) < 0x1p1000))
         fail(file_name, line, std::string(1, "xyz"[axis]) + " coordinate is out of range (magnitude 2^1000 or more)");
       query.points[k][axis] = x;
