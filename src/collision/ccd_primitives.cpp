@@ -1,5 +1,7 @@
 #include "reconfig/collision/ccd_primitives.h"
 
+#include "reconfig/collision/coplanarity_cubic.h"
+
 #include <algorithm>
 #include <array>
 #include <cassert>
@@ -226,6 +228,18 @@ double contact_witness(const MovingQuad& q, const PrimitiveCcdOptions& options) 
   return -1;
 }
 
+/// Whether the query's four points are certainly never coplanar during [lo, hi] (no contact
+/// of any kind can happen then; `coplanarity_cubic.h`, whose verdicts are robust to the same
+/// perturbation as a "no" of the search).
+bool never_coplanar(const MovingQuad& q, double lo, double hi) {
+  MovingPoints points;
+  for (int k = 0; k < 4; ++k) {
+    points.start[k] = Eigen::Vector3d(q.x0[k][0], q.x0[k][1], q.x0[k][2]);
+    points.end[k] = Eigen::Vector3d(q.x1[k][0], q.x1[k][1], q.x1[k][2]);
+  }
+  return CoplanarityCubic(points, lo, hi).classify() == Coplanarity::kNever;
+}
+
 /// The time F takes to change by the tolerance at most: F(t, u, v) moves by at most
 /// |Δd| + |Δe1| + |Δe2| (per coordinate, Δ over the whole step) per unit of time.
 template <Kind kind>
@@ -272,7 +286,11 @@ PrimitiveCcdResult solve(const MovingQuad& q, const PrimitiveCcdOptions& options
         refine_width = witness_refine_width<kind>(q, options);
         result.toi = std::max(options.t_min, witness - refine_width);
         size = 0;
-        if (result.toi > options.t_min) stack[size++] = Box{{options.t_min, 0, 0}, {result.toi, 1, 1}, {0, 0, 0}};
+        // Usually the four points are never coplanar before: then nothing touches before
+        // (unless a separation makes near misses count too).
+        const bool settled = options.separation == 0 && never_coplanar(q, options.t_min, result.toi);
+        if (result.toi > options.t_min && !settled)
+          stack[size++] = Box{{options.t_min, 0, 0}, {result.toi, 1, 1}, {0, 0, 0}};
         continue;
       }
     }

@@ -170,17 +170,22 @@ TEST(VertexFaceCcd, BudgetGivesAConservativeHit) {
   EXPECT_TRUE(r.hit);
   EXPECT_TRUE(r.budget_exhausted);
   EXPECT_LE(r.toi, 1.0 / 5);
-  // A crossing whose witness is found at once: the budget then runs out proving that
-  // nothing comes before it, in an "earliest" query only.
+  // A crossing needs no budget in either mode: its witness proves the contact, and (for the
+  // earliest one) the coplanarity cubic that nothing comes before it.
   options.max_boxes = 1;
-  const PrimitiveCcdResult crossing = still_triangle({1, 1, 1}, {1, 1, -2}).run(options);
-  EXPECT_TRUE(crossing.hit);
-  EXPECT_TRUE(crossing.budget_exhausted);
-  EXPECT_LE(crossing.toi, 1.0 / 3);
-  options.earliest = false;
-  const PrimitiveCcdResult whether = still_triangle({1, 1, 1}, {1, 1, -2}).run(options);
-  EXPECT_TRUE(whether.hit);
-  EXPECT_FALSE(whether.budget_exhausted);
+  for (const bool earliest : {true, false}) {
+    options.earliest = earliest;
+    const PrimitiveCcdResult crossing = still_triangle({1, 1, 1}, {1, 1, -2}).run(options);
+    EXPECT_TRUE(crossing.hit);
+    EXPECT_FALSE(crossing.budget_exhausted);
+    EXPECT_LE(crossing.toi, 1.0 / 3 + (earliest ? 0 : 1e-12));
+    EXPECT_GT(crossing.toi, 1.0 / 3 - 1e-6);
+  }
+  // With a separation, near misses count as contacts and the cubic proves nothing: an
+  // earliest query searches, and runs out.
+  options.earliest = true;
+  options.separation = 1e-3;
+  EXPECT_TRUE(still_triangle({1, 1, 1}, {1, 1, -2}).run(options).budget_exhausted);
 }
 
 // ---- edge–edge: constructed ----------------------------------------------------------------

@@ -36,9 +36,11 @@
 ///   boxes still waiting are cut at the current `toi` and halved until each is excluded or as
 ///   short as the first accepted box (whose start then bounds `toi`): tight to about
 ///   `tolerance` / (relative speed) when the motion, not the (u, v) extent, decides. After a
-///   witness at t*, the search starts again on [t_min, t* − w], w the time F needs to change
-///   by `tolerance`, with its direction tests taken at each box's end (the geometry nearest
-///   the known contact separates best), so a simple crossing is settled in a few boxes.
+///   witness at t*, toi = t* − w, w the time F needs to change by `tolerance`, if the four
+///   points are certainly never coplanar before (`coplanarity_cubic.h`; only without a
+///   `separation`, which makes near misses count); else the search starts again on
+///   [t_min, t* − w], with its direction tests taken at each box's end (the geometry nearest
+///   the known contact separates best). A simple crossing is settled without a search.
 /// - **Robust "no".** A "no" is certified with a margin: it stays "no" when every vertex
 ///   position is perturbed by up to `robust_perturbation` of the scale (see below). The
 ///   triangle-pair narrow phase relies on this to evaluate static tests at rounded positions.
