@@ -118,9 +118,9 @@ inline bool separated_along_directions(const double f[8][3], const double d[3], 
   return false;
 }
 
-/// Boxes the search examines before it looks for a witness (below), in a "whether" query: the
-/// first box, the whole domain, already excludes far misses, and a contact would otherwise
-/// cost a descent of dozens of boxes to the tolerance.
+/// Boxes the search examines before it looks for a witness (below): the first box, the whole
+/// domain, already excludes far misses, and a contact would otherwise cost a descent of
+/// dozens of boxes to the tolerance.
 constexpr int kWitnessAfterBoxes = 1;
 
 double det3(const double x[3], const double y[3], const double z[3]) {
@@ -275,9 +275,11 @@ PrimitiveCcdResult solve(const MovingQuad& q, const PrimitiveCcdOptions& options
     if (kind == Kind::kVertexFace && box.lo[1] + box.lo[2] > 1) continue;  // outside the simplex
     if (result.boxes == kWitnessAfterBoxes && !result.hit) {
       // The whole domain is undecided: a contact is likely, and a witness proves one. It ends
-      // a "whether" query. An "earliest" one starts again on the time before it, less the
+      // a "whether" query. For an "earliest" one, what remains is the time before it, less the
       // time F takes to change by the tolerance (also the refinement's width, as after an
-      // accepted box): if that is free of contacts, its end bounds the first contact.
+      // accepted box): if that is free of contacts, its end bounds the first contact. Usually
+      // the four points are never coplanar then, which settles it (unless a separation makes
+      // near misses count too); else the search starts again on it.
       const double witness = contact_witness<kind>(q, options);
       if (witness >= 0) {
         result.hit = true;
@@ -286,10 +288,8 @@ PrimitiveCcdResult solve(const MovingQuad& q, const PrimitiveCcdOptions& options
         refine_width = witness_refine_width<kind>(q, options);
         result.toi = std::max(options.t_min, witness - refine_width);
         size = 0;
-        // Usually the four points are never coplanar before: then nothing touches before
-        // (unless a separation makes near misses count too).
-        const bool settled = options.separation == 0 && never_coplanar(q, options.t_min, result.toi);
-        if (result.toi > options.t_min && !settled)
+        const bool before = result.toi > options.t_min;
+        if (before && !(options.separation == 0 && never_coplanar(q, options.t_min, result.toi)))
           stack[size++] = Box{{options.t_min, 0, 0}, {result.toi, 1, 1}, {0, 0, 0}};
         continue;
       }
