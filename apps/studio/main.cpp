@@ -27,10 +27,12 @@ struct Options {
   int frames = 0;
   bool headless = false, window = false, ghosts = false;
   double time = -1;
+  studio::StudioOptions studio;
+  int dop = 28;
 };
 
 int run_headless(const Options& options, int width, int height) {
-  studio::HeadlessFrontend frontend(width, height);
+  studio::HeadlessFrontend frontend(width, height, options.studio);
   studio::Studio& studio = frontend.studio();
   studio.show_ghosts = options.ghosts;
   if (!options.scene.empty() && !studio.open(options.scene)) {
@@ -84,12 +86,26 @@ int main(int argc, char** argv) {
   app.add_option("--frame-times", options.frame_times, "write frame time statistics of --frames as JSON");
   app.add_option("--time", options.time, "start at this time of the first transition");
   app.add_flag("--ghosts", options.ghosts, "show ghosts of moving parts");
+  collision::DetectorOptions& detector = options.studio.collisions.detector;
+  app.add_option("--tolerance", detector.tolerance, "collision settings: largest distance between proxy and true motion")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  app.add_option("--dop", options.dop, "collision settings: k-DOP family of the spacetime hierarchies")
+      ->check(CLI::IsMember({8, 28, 80}))
+      ->capture_default_str();
+  app.add_option("--box-resolution", detector.box_resolution,
+                 "collision settings: grid of the collision boxes, a fraction of the smaller part's size (0: exact)")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
+  app.add_flag("--conservative", detector.conservative,
+               "collision settings: also report near misses the true motion may turn into collisions");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
     const int code = app.exit(error);
     return code == 0 ? 0 : 2;
   }
+  detector.dop = options.dop == 8 ? collision::DopFamily::k8 : options.dop == 80 ? collision::DopFamily::k80 : collision::DopFamily::k28;
   int width = 0, height = 0;
   char x = 0;
   std::istringstream size(options.size);
@@ -101,8 +117,7 @@ int main(int argc, char** argv) {
                                             !options.script.empty() || options.frames > 0);
   try {
     if (headless) return run_headless(options, width, height);
-    studio::StudioOptions studio_options;
-    studio::run_in_window(studio_options, options.scene.empty() ? std::nullopt : std::optional(options.scene), width,
+    studio::run_in_window(options.studio, options.scene.empty() ? std::nullopt : std::optional(options.scene), width,
                           height, options.frames, options.screenshot);
   } catch (const render::ContextError& error) {
     std::cerr << "reconfig-studio: " << error.what() << "\n";

@@ -1,6 +1,7 @@
 #include "script.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <cmath>
 #include <sstream>
@@ -85,6 +86,25 @@ class Runner {
 
   Studio& studio() { return frontend_.studio(); }
 
+  /// `options` with the script's `KEY=VALUE` collision settings applied.
+  collision::DetectorOptions with_settings(collision::DetectorOptions options, const std::vector<std::string>& settings) const {
+    for (const std::string& setting : settings) {
+      const auto equals = setting.find('=');
+      const std::string key = setting.substr(0, equals), value = equals == std::string::npos ? "" : setting.substr(equals + 1);
+      const std::vector<std::string> word{value};
+      if (key == "tolerance") options.tolerance = number(word, 0, "tolerance");
+      else if (key == "box-resolution") options.box_resolution = number(word, 0, "box-resolution");
+      else if (key == "frame") options.frame = number(word, 0, "frame");
+      else if (key == "dop" && (value == "8" || value == "28" || value == "80"))
+        options.dop = value == "8" ? collision::DopFamily::k8 : value == "28" ? collision::DopFamily::k28 : collision::DopFamily::k80;
+      else if (key == "conservative" && (value == "on" || value == "off")) options.conservative = value == "on";
+      else
+        fail(fmt::format("unknown collision setting \"{}\" (tolerance=, dop=8|28|80, box-resolution=, frame=, "
+                         "conservative=on|off)", setting));
+    }
+    return options;
+  }
+
   const scene::Reconfigurable& scene() {
     if (!studio().document()) fail("no design is open");
     return studio().document()->scene();
@@ -145,23 +165,16 @@ class Runner {
       if (!frontend_.run_until_collisions_current(std::chrono::milliseconds(static_cast<long>(seconds * 1000))))
         fail(fmt::format("collision detection did not finish within {} s", seconds));
     } else if (action == "collision-settings") {
-      collision::DetectorOptions options = studio().detector_options();
-      for (const std::string& setting : args) {
-        const auto equals = setting.find('=');
-        const std::string key = setting.substr(0, equals), value = equals == std::string::npos ? "" : setting.substr(equals + 1);
-        const std::vector<std::string> word{value};
-        if (key == "tolerance") options.tolerance = number(word, 0, "tolerance");
-        else if (key == "box-resolution") options.box_resolution = number(word, 0, "box-resolution");
-        else if (key == "frame") options.frame = number(word, 0, "frame");
-        else if (key == "dop" && (value == "8" || value == "28" || value == "80"))
-          options.dop = value == "8" ? collision::DopFamily::k8 : value == "28" ? collision::DopFamily::k28 : collision::DopFamily::k80;
-        else if (key == "conservative" && (value == "on" || value == "off")) options.conservative = value == "on";
-        else
-          fail(fmt::format("unknown collision setting \"{}\" (tolerance=, dop=8|28|80, box-resolution=, frame=, "
-                           "conservative=on|off)", setting));
-      }
+      const collision::DetectorOptions options = with_settings(studio().detector_options(), args);
       if (!studio().set_detector_options(options)) fail(studio().status());
       frontend_.run_frame();
+    } else if (action == "expect-collision-settings") {
+      const collision::DetectorOptions& now = studio().detector_options();
+      const collision::DetectorOptions expected = with_settings(now, args);
+      if (expected.tolerance != now.tolerance || expected.dop != now.dop || expected.box_resolution != now.box_resolution ||
+          expected.frame != now.frame || expected.conservative != now.conservative)
+        fail(fmt::format("the collision settings are not {}: the status says \"{}\"", fmt::join(args, " "),
+                         studio().status()));
     } else if (action == "mouse") {
       input.mouse = {static_cast<float>(number(args, 0, "x")), static_cast<float>(number(args, 1, "y"))};
       frontend_.run_frame();

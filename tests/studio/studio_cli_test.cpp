@@ -16,6 +16,24 @@ TEST(StudioCli, TheExampleSessionScriptPasses) {
   EXPECT_EQ(result.exit_code, 0) << result.err;
 }
 
+TEST(StudioCli, CollisionSettingsFromTheCommandLine) {
+  const std::filesystem::path scene = bench_table_copy();
+  const std::filesystem::path script = scene.parent_path() / "settings.txt";
+  std::ofstream(script) << "expect-collision-settings tolerance=0.002 dop=80 box-resolution=0 conservative=on\n"
+                           "wait-collisions\nclick-edge unfold\nexpect-collision-at 0.4\n";
+  const auto result = testing::run_tool("reconfig-studio", scene.string() + " --script " + script.string() +
+                                                               " --tolerance 0.002 --dop 80 --box-resolution 0 --conservative");
+  EXPECT_EQ(result.exit_code, 0) << result.err;
+  // The defaults are not those: the same expectation fails without the options.
+  const auto defaults = testing::run_tool("reconfig-studio", scene.string() + " --script " + script.string());
+  EXPECT_EQ(defaults.exit_code, 1);
+  EXPECT_NE(defaults.err.find("settings.txt:1: the collision settings are not"), std::string::npos) << defaults.err;
+  // Out of range: a usage error.
+  EXPECT_EQ(testing::run_tool("reconfig-studio", scene.string() + " --headless --dop 7").exit_code, 2);
+  EXPECT_EQ(testing::run_tool("reconfig-studio", scene.string() + " --headless --box-resolution 2").exit_code, 2);
+  EXPECT_EQ(testing::run_tool("reconfig-studio", scene.string() + " --headless --tolerance -1").exit_code, 2);
+}
+
 TEST(StudioCli, AFailedExpectationNamesTheLineAndExitsOne) {
   const std::filesystem::path scene = bench_table_copy();
   const std::filesystem::path script = scene.parent_path() / "wrong.txt";
