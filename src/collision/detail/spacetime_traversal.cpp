@@ -567,6 +567,9 @@ void add_stats(DetectionStats& into, const DetectionStats& s) {
   into.pruned += s.pruned;
 }
 
+/// Work items per task in the breadth-first phase.
+constexpr std::size_t kBreadthFirstGrain = 4;
+
 /// Steps processed between two progress reports in the depth-first phase.
 constexpr std::size_t kStepsPerBatch = 16;
 
@@ -637,10 +640,10 @@ bool run_traversal(const Traversal<family>& tr, std::vector<TriangleContact>& co
       const ItemContext context{step_groups, found_parts.local(), stat_parts.local()};
       for (std::size_t i = begin; i < end; ++i) process(tr, level[i], next, context);
     };
-    if (level.size() < 512) run(0, level.size());
-    else
-      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, level.size(), 256),
-                        [&](const tbb::blocked_range<std::size_t>& r) { run(r.begin(), r.end()); });
+    // Items of these first levels span many steps (a bound over every sample of their range
+    // each): worth a task of a few.
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, level.size(), kBreadthFirstGrain),
+                      [&](const tbb::blocked_range<std::size_t>& r) { run(r.begin(), r.end()); });
     std::vector<WorkItem> next;
     next_parts.combine_each([&](const std::vector<WorkItem>& part) { next.insert(next.end(), part.begin(), part.end()); });
     std::vector<LineContact> batch;
