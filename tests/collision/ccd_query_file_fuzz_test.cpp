@@ -6,7 +6,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdlib>
 #include <random>
 #include <sstream>
 #include <string>
@@ -14,6 +13,7 @@
 
 #include "reconfig/collision/ccd_query_file.h"
 #include "reconfig/common/input_error.h"
+#include "support/text_mutation.h"
 
 namespace reconfig::collision {
 namespace {
@@ -37,45 +37,10 @@ std::vector<std::string> seeds() {
 }
 
 std::string mutate(const std::string& original, std::mt19937& rng) {
-  std::string s = original;
-  const auto pick = [&](std::size_t n) { return n == 0 ? std::size_t{0} : static_cast<std::size_t>(rng() % n); };
   static const std::vector<std::string> tokens = {
       ",",  "\n", "-",   "+", "0",    " ",   "9999999999999999999999999999999", std::string(320, '9'),
       "1e5", ".", "nan", "x", "\r\n", "--1", ",,",                              std::string(1, '\0')};
-  const int edits = 1 + static_cast<int>(rng() % 4);
-  for (int e = 0; e < edits; ++e) {
-    switch (rng() % 6) {
-      case 0:  // random byte
-        if (!s.empty()) s[pick(s.size())] = static_cast<char>(rng() & 0xff);
-        break;
-      case 1:  // truncate
-        s.resize(pick(s.size() + 1));
-        break;
-      case 2: {  // delete a range
-        const std::size_t at = pick(s.size() + 1), length = pick(std::min<std::size_t>(40, s.size() - at + 1));
-        s.erase(at, length);
-        break;
-      }
-      case 3: {  // duplicate a range (whole rows, sometimes)
-        const std::size_t at = pick(s.size() + 1), length = pick(std::min<std::size_t>(200, s.size() - at + 1));
-        s.insert(pick(s.size() + 1), s.substr(at, length));
-        break;
-      }
-      default: {  // insert or overwrite with a token
-        const std::string& token = tokens[pick(tokens.size())];
-        const std::size_t at = pick(s.size() + 1);
-        if (rng() % 2) s.insert(at, token);
-        else s.replace(at, std::min(token.size(), s.size() - at), token);
-        break;
-      }
-    }
-  }
-  return s;
-}
-
-int env_or(const char* name, int fallback) {
-  const char* value = std::getenv(name);
-  return value ? std::atoi(value) : fallback;
+  return testing::mutate_text(original, rng, tokens, 200);
 }
 
 TEST(CcdQueryFileFuzz, MutatedFilesParseOrFailWithAnInputError) {
@@ -84,8 +49,8 @@ TEST(CcdQueryFileFuzz, MutatedFilesParseOrFailWithAnInputError) {
     std::istringstream in(original);
     ASSERT_NO_THROW(parse_ccd_queries(in, kFileName));
   }
-  std::mt19937 rng(static_cast<unsigned>(env_or("RECONFIG_FUZZ_SEED", 2024)));
-  const int trials = env_or("RECONFIG_FUZZ_TRIALS", 3000);
+  std::mt19937 rng(static_cast<unsigned>(testing::fuzz_setting("RECONFIG_FUZZ_SEED", 2024)));
+  const int trials = testing::fuzz_setting("RECONFIG_FUZZ_TRIALS", 3000);
   int parsed = 0, refused = 0;
   for (int trial = 0; trial < trials; ++trial) {
     const std::string text = mutate(originals[trial % originals.size()], rng);

@@ -21,6 +21,7 @@
 #include "reconfig/geometry/primitives.h"
 #include "reconfig/geometry/save_mesh.h"
 #include "support/test_data.h"
+#include "support/text_mutation.h"
 
 namespace reconfig::geometry {
 namespace {
@@ -91,47 +92,11 @@ std::vector<Seed> seeds() {
 }
 
 std::string mutate(const std::string& original, std::mt19937& rng) {
-  std::string s = original;
-  auto pick = [&](std::size_t n) { return n == 0 ? std::size_t{0} : static_cast<std::size_t>(rng() % n); };
   static const std::vector<std::string> tokens = {"-1",   "0",    "4294967295", "99999999999", "1e308", "-1e400",
                                                   "nan",  "inf",  "#",          "\n",          " ",     "/",
                                                   "f",    "v",    "3",          "255",         "-",     ".",
                                                   "\0",   "end_header\n", "endsolid", "facet normal", "OFF", "vn"};
-  const int edits = 1 + static_cast<int>(rng() % 4);
-  for (int e = 0; e < edits; ++e) {
-    switch (rng() % 7) {
-      case 0:  // random byte
-        if (!s.empty()) s[pick(s.size())] = static_cast<char>(rng() & 0xff);
-        break;
-      case 1:  // flip one bit
-        if (!s.empty()) s[pick(s.size())] ^= static_cast<char>(1 << (rng() % 8));
-        break;
-      case 2:  // truncate
-        s.resize(pick(s.size() + 1));
-        break;
-      case 3: {  // delete a range
-        const std::size_t at = pick(s.size() + 1), length = pick(std::min<std::size_t>(64, s.size() - at + 1));
-        s.erase(at, length);
-        break;
-      }
-      case 4: {  // duplicate a range
-        const std::size_t at = pick(s.size() + 1), length = pick(std::min<std::size_t>(64, s.size() - at + 1));
-        s.insert(pick(s.size() + 1), s.substr(at, length));
-        break;
-      }
-      default: {  // insert or overwrite with a token that parsers find interesting
-        const std::string& token = tokens[pick(tokens.size())];
-        const std::size_t at = pick(s.size() + 1);
-        if (rng() % 2) {
-          s.insert(at, token);
-        } else {
-          s.replace(at, std::min(token.size(), s.size() - at), token);
-        }
-        break;
-      }
-    }
-  }
-  return s;
+  return reconfig::testing::mutate_text(original, rng, tokens);
 }
 
 /// Loads `bytes`; fails the test unless it is a valid-index mesh or an InputError. Returns
@@ -159,10 +124,10 @@ bool expect_mesh_or_input_error(const std::string& bytes, const std::string& ext
 TEST(LoadMeshFuzz, MutatedFilesLoadOrThrowInputError) {
   const std::vector<Seed> all = seeds();
   for (const Seed& seed : all) ASSERT_NO_THROW(load_mesh_from_memory(seed.bytes, seed.extension)) << seed.extension;
-  std::mt19937 rng(std::getenv("RECONFIG_FUZZ_SEED") ? std::atoi(std::getenv("RECONFIG_FUZZ_SEED")) : 12345);
+  std::mt19937 rng(static_cast<unsigned>(reconfig::testing::fuzz_setting("RECONFIG_FUZZ_SEED", 12345)));
   const auto start = std::chrono::steady_clock::now();
   int trials = 0, loaded = 0;
-  const int max_trials = std::getenv("RECONFIG_FUZZ_TRIALS") ? std::atoi(std::getenv("RECONFIG_FUZZ_TRIALS")) : 10000;
+  const int max_trials = reconfig::testing::fuzz_setting("RECONFIG_FUZZ_TRIALS", 10000);
   for (; trials < max_trials; ++trials) {
     const Seed& seed = all[static_cast<std::size_t>(trials) % all.size()];
     const std::string bytes = mutate(seed.bytes, rng);
