@@ -133,10 +133,6 @@ void write_file(const std::string& path, const std::string& text) {
   write_atomically(path, [&](std::ostream& out) { out << text; });
 }
 
-collision::DopFamily dop_family(int dop) {
-  return dop == 8 ? collision::DopFamily::k8 : dop == 80 ? collision::DopFamily::k80 : collision::DopFamily::k28;
-}
-
 CheckOutcome run_reference(const scene::Reconfigurable& scene, const CheckOptions& options,
                            const std::vector<int>& transitions, const ProgressCallback& progress) {
   collision::ReferenceCheckRequest request;
@@ -152,7 +148,7 @@ CheckOutcome run_engine(const scene::Reconfigurable& scene, const CheckOptions& 
                         const std::vector<int>& transitions, const ProgressCallback& progress) {
   collision::CollisionRequest request;
   request.detector.tolerance = options.tolerance;
-  request.detector.dop = dop_family(options.dop);
+  request.detector.dop = *collision::dop_family(options.dop);  // --dop is checked to be 8, 28 or 80
   request.detector.conservative = options.conservative;
   request.detector.all_contacts = options.all_contacts;
   request.detector.box_resolution = options.box_resolution;

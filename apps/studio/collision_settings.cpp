@@ -21,7 +21,6 @@ std::string settings_problem(const collision::DetectorOptions& options) {
 
 constexpr collision::DopFamily kFamilies[] = {collision::DopFamily::k8, collision::DopFamily::k28, collision::DopFamily::k80};
 constexpr const char* kFamilyNames[] = {"8-DOP (boxes)", "28-DOP", "80-DOP"};
-constexpr int kFamilyAxes[] = {8, 28, 80};
 
 int family_index(collision::DopFamily family) {
   for (int i = 0; i < 3; ++i)
@@ -31,7 +30,7 @@ int family_index(collision::DopFamily family) {
 
 std::string describe(const collision::DetectorOptions& options) {
   return fmt::format("tolerance {:g}, {}-DOP, {}, frames of {:g}{}", options.tolerance,
-                     kFamilyAxes[family_index(options.dop)],
+                     collision::halfspace_count(options.dop),
                      options.box_resolution > 0 ? fmt::format("box grid {:g} %", 100 * options.box_resolution)
                                                 : std::string("exact boxes"),
                      options.frame, options.conservative ? ", conservative" : "");

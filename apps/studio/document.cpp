@@ -24,7 +24,7 @@ std::unique_ptr<Document> Document::recover(const fs::path& file, collision::Col
 }
 
 Document::Document(scene::Reconfigurable scene, fs::path file, collision::CollisionServiceOptions options)
-    : file_(std::move(file)), collision_options_(options), service_(std::make_unique<collision::CollisionService>(options)) {
+    : file_(std::move(file)), service_(std::make_unique<collision::CollisionService>(options)) {
   scene::DirtySet everything;
   everything.structure_changed = true;
   publish(std::make_shared<const scene::Reconfigurable>(std::move(scene)), everything);
@@ -76,7 +76,6 @@ std::string Document::execute(std::unique_ptr<scene::Command> command) {
 }
 
 void Document::set_collision_options(const collision::CollisionServiceOptions& options) {
-  collision_options_ = options;
   service_ = std::make_unique<collision::CollisionService>(options);
   scene::DirtySet everything;
   everything.structure_changed = true;

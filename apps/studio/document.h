@@ -76,7 +76,6 @@ class Document {
   static constexpr int kDetailedTriangles = 20000;
 
   const collision::CollisionService& collisions() const { return *service_; }
-  const collision::CollisionServiceOptions& collision_options() const { return collision_options_; }
   /// Detects collisions with other settings from now on: a new service takes over the current
   /// design and detects every transition again (the old one's work is abandoned).
   void set_collision_options(const collision::CollisionServiceOptions& options);
@@ -94,7 +93,6 @@ class Document {
   std::vector<std::shared_ptr<const geometry::Mesh>> moving_meshes_;
   std::filesystem::path file_;
   scene::History history_;
-  collision::CollisionServiceOptions collision_options_;
   std::unique_ptr<collision::CollisionService> service_;
   std::uint64_t version_ = 0;
   bool modified_ = false;

@@ -28,7 +28,7 @@ struct Options {
   bool headless = false, window = false, ghosts = false;
   double time = -1;
   studio::StudioOptions studio;
-  int dop = 28;
+  int dop = collision::halfspace_count(collision::DetectorOptions{}.dop);
 };
 
 int run_headless(const Options& options, int width, int height) {
@@ -105,7 +105,7 @@ int main(int argc, char** argv) {
     const int code = app.exit(error);
     return code == 0 ? 0 : 2;
   }
-  detector.dop = options.dop == 8 ? collision::DopFamily::k8 : options.dop == 80 ? collision::DopFamily::k80 : collision::DopFamily::k28;
+  detector.dop = *collision::dop_family(options.dop);  // --dop is checked to be 8, 28 or 80
   int width = 0, height = 0;
   char x = 0;
   std::istringstream size(options.size);

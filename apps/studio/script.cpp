@@ -92,15 +92,23 @@ class Runner {
       const auto equals = setting.find('=');
       const std::string key = setting.substr(0, equals), value = equals == std::string::npos ? "" : setting.substr(equals + 1);
       const std::vector<std::string> word{value};
-      if (key == "tolerance") options.tolerance = number(word, 0, "tolerance");
-      else if (key == "box-resolution") options.box_resolution = number(word, 0, "box-resolution");
-      else if (key == "frame") options.frame = number(word, 0, "frame");
-      else if (key == "dop" && (value == "8" || value == "28" || value == "80"))
-        options.dop = value == "8" ? collision::DopFamily::k8 : value == "28" ? collision::DopFamily::k28 : collision::DopFamily::k80;
-      else if (key == "conservative" && (value == "on" || value == "off")) options.conservative = value == "on";
-      else
+      if (key == "tolerance") {
+        options.tolerance = number(word, 0, "tolerance");
+      } else if (key == "box-resolution") {
+        options.box_resolution = number(word, 0, "box-resolution");
+      } else if (key == "frame") {
+        options.frame = number(word, 0, "frame");
+      } else if (key == "dop") {
+        const double halfspaces = number(word, 0, "dop");
+        const auto family = halfspaces == std::floor(halfspaces) ? collision::dop_family(static_cast<int>(halfspaces)) : std::nullopt;
+        if (!family) fail(fmt::format("dop must be 8, 28 or 80, not \"{}\"", value));
+        options.dop = *family;
+      } else if (key == "conservative" && (value == "on" || value == "off")) {
+        options.conservative = value == "on";
+      } else {
         fail(fmt::format("unknown collision setting \"{}\" (tolerance=, dop=8|28|80, box-resolution=, frame=, "
                          "conservative=on|off)", setting));
+      }
     }
     return options;
   }

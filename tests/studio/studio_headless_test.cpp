@@ -292,7 +292,7 @@ TEST_F(StudioHeadless, CollisionSettingsDetectAgainAndBadOnesAreRefused) {
   exact.box_resolution = 0;
   exact.dop = collision::DopFamily::k8;
   ASSERT_TRUE(studio().set_detector_options(exact)) << studio().status();
-  EXPECT_EQ(studio().document()->collision_options().detector.box_resolution, 0.0);
+  EXPECT_EQ(studio().detector_options().box_resolution, 0.0);
   ASSERT_TRUE(frontend_->run_until_collisions_current(milliseconds(60000)));
   const std::vector<collision::CollisionInterval> after = shown(unfold).frames;
   ASSERT_EQ(after.size(), before.size());

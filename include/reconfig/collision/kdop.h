@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 #include <array>
 #include <limits>
+#include <optional>
 
 namespace reconfig::collision {
 
@@ -18,6 +19,17 @@ enum class DopFamily {
 /// Number of axes (half the number of halfspaces) of a family.
 constexpr int axis_count(DopFamily family) {
   return family == DopFamily::k8 ? 4 : family == DopFamily::k28 ? 14 : 40;
+}
+
+/// The number of halfspaces of a family (8, 28 or 80: how `--dop` and the papers name it).
+constexpr int halfspace_count(DopFamily family) { return 2 * axis_count(family); }
+
+/// The family with `halfspaces` halfspaces (8, 28 or 80), or none for another number.
+constexpr std::optional<DopFamily> dop_family(int halfspaces) {
+  if (halfspaces == 8) return DopFamily::k8;
+  if (halfspaces == 28) return DopFamily::k28;
+  if (halfspaces == 80) return DopFamily::k80;
+  return std::nullopt;
 }
 
 /// The axes of a family as 4D directions (spatial part, temporal part), not normalized.
