@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <sys/wait.h>
+#include <tuple>
 
 #include "command.h"
 #include "reconfig/common/input_error.h"
@@ -70,11 +71,11 @@ std::string comparison_key(const std::string& suffix) {
   return key;
 }
 
-/// A benchmark's real time in nanoseconds.
-double nanoseconds(const nlohmann::json& b) {
+/// A benchmark's real time (or, with `field` "cpu_time", its CPU time) in nanoseconds.
+double nanoseconds(const nlohmann::json& b, const char* field = "real_time") {
   const std::string unit = b["time_unit"];
   const double scale = unit == "s" ? 1e9 : unit == "ms" ? 1e6 : unit == "us" ? 1e3 : 1.0;
-  return b["real_time"].get<double>() * scale;
+  return b[field].get<double>() * scale;
 }
 
 /// "0.123 s", "45.6 ms", "7.89 µs" from nanoseconds.
@@ -103,7 +104,8 @@ nlohmann::ordered_json collision_summary(const nlohmann::json& benchmarks) {
       row["label"] = b.value("label", "");
       for (const char* counter : {"triangles", "parts", "samples"}) row[counter] = b.value(counter, 0.0);
       for (const char* column :
-           {"engine_ns", "dop8_ns", "dop80_ns", "all_contacts_ns", "update_ns", "reference_ns", "fcl_ns", "fcl_all_contacts_ns"})
+           {"engine_ns", "dop8_ns", "dop80_ns", "all_contacts_ns", "update_ns", "reference_ns", "fcl_ns", "fcl_all_contacts_ns",
+            "engine_cpu_ns", "fcl_cpu_ns"})
         row[column] = nullptr;
       rows[key] = row;
     }
@@ -134,6 +136,9 @@ nlohmann::ordered_json collision_summary(const nlohmann::json& benchmarks) {
     }
     nlohmann::ordered_json& row = row_for(key, b);
     row[column] = nanoseconds(b);
+    // CPU time of the whole process (the benchmarks measure it over all threads): steadier than
+    // wall-clock time on a machine whose steal time comes and goes.
+    if (column == "engine_ns" || column == "fcl_ns") row[column.substr(0, column.size() - 3) + "_cpu_ns"] = nanoseconds(b, "cpu_time");
     if (family == "BM_FullDetection" && column == "engine_ns") row["contacts"] = b.value("contacts", 0.0);
     if (family == "BM_FclPerStep") {
       row["fcl_colliding_samples"] = b.value("colliding_samples", 0.0);
@@ -143,14 +148,15 @@ nlohmann::ordered_json collision_summary(const nlohmann::json& benchmarks) {
   nlohmann::ordered_json summary = nlohmann::ordered_json::array();
   for (const std::string& key : order) {
     nlohmann::ordered_json& row = rows[key];
-    constexpr std::array<std::pair<const char*, const char*>, 3> kRatios = {
-        {{"engine_vs_reference", "reference_ns"},
-         {"engine_vs_fcl", "fcl_ns"},
-         {"engine_vs_fcl_all_contacts", "fcl_all_contacts_ns"}}};
-    for (const auto& [column, baseline] : kRatios)
-      row[column] = row["engine_ns"].is_null() || row[baseline].is_null()
+    constexpr std::array<std::tuple<const char*, const char*, const char*>, 4> kRatios = {
+        {{"engine_vs_reference", "reference_ns", "engine_ns"},
+         {"engine_vs_fcl", "fcl_ns", "engine_ns"},
+         {"engine_vs_fcl_all_contacts", "fcl_all_contacts_ns", "engine_ns"},
+         {"engine_vs_fcl_cpu", "fcl_cpu_ns", "engine_cpu_ns"}}};
+    for (const auto& [column, baseline, subject] : kRatios)
+      row[column] = row[subject].is_null() || row[baseline].is_null()
                         ? nlohmann::ordered_json(nullptr)
-                        : nlohmann::ordered_json(row[baseline].get<double>() / row["engine_ns"].get<double>());
+                        : nlohmann::ordered_json(row[baseline].get<double>() / row[subject].get<double>());
     summary.push_back(row);
   }
   return summary;
@@ -160,19 +166,20 @@ void print_collision_summary(const nlohmann::ordered_json& summary) {
   if (summary.empty()) return;
   const auto time = [](const nlohmann::ordered_json& v) { return v.is_null() ? std::string("—") : human_time(v.get<double>()); };
   const auto ratio = [](const nlohmann::ordered_json& v) { return v.is_null() ? std::string("—") : human_ratio(v.get<double>()); };
-  fmt::print("\nper scene (real time; engine = 28-DOP full detection at 1 mm; samples = the engine's time resolution)\n");
+  fmt::print("\nper scene (real time; engine = 28-DOP full detection at 1 mm; samples = the engine's time resolution;\n"
+             "engine/FCL CPU: the ratio of their processes' CPU times over all threads)\n");
   fmt::print("(FCL: whether each pair of parts intersects at each sample; FCL all: every intersecting triangle pair)\n");
-  fmt::print("{:<5} {:<36} {:>9} {:>5} {:>7} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>17} {:>15} {:>15}\n", "scene",
+  fmt::print("{:<5} {:<36} {:>9} {:>5} {:>7} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>17} {:>15} {:>15} {:>15}\n", "scene",
              "", "triangles", "parts", "samples", "engine", "8-DOP", "80-DOP", "update", "reference", "FCL", "FCL all",
-             "engine/reference", "engine/FCL", "engine/FCL all");
+             "engine/reference", "engine/FCL", "engine/FCL all", "engine/FCL CPU");
   for (const auto& row : summary)
-    fmt::print("{:<5} {:<36} {:>9} {:>5} {:>7} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>17} {:>15} {:>15}\n",
+    fmt::print("{:<5} {:<36} {:>9} {:>5} {:>7} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>17} {:>15} {:>15} {:>15}\n",
                row["scene"].get<std::string>(), row["label"].get<std::string>().substr(0, 36),
                static_cast<long>(row["triangles"].get<double>()), static_cast<long>(row["parts"].get<double>()),
                static_cast<long>(row["samples"].get<double>()), time(row["engine_ns"]), time(row["dop8_ns"]),
                time(row["dop80_ns"]), time(row["update_ns"]), time(row["reference_ns"]), time(row["fcl_ns"]),
                time(row["fcl_all_contacts_ns"]), ratio(row["engine_vs_reference"]), ratio(row["engine_vs_fcl"]),
-               ratio(row["engine_vs_fcl_all_contacts"]));
+               ratio(row["engine_vs_fcl_all_contacts"]), ratio(row["engine_vs_fcl_cpu"]));
 }
 
 int run_bench(const BenchOptions& options) {

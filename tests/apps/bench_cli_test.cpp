@@ -59,10 +59,14 @@ TEST_F(BenchCli, CollisionSuiteSummarizesEachSceneWithTheBaselineRatios) {
   EXPECT_EQ(report["ratios"].size(), fcl ? 8u : 4u);
   if (fcl) {
     EXPECT_GT(row["engine_vs_fcl"].get<double>(), 0.0);
+    // By CPU time over all threads too: the engine's own CPU time, and the ratio of the two.
+    EXPECT_GT(row["engine_cpu_ns"].get<double>(), 0.0);
+    EXPECT_DOUBLE_EQ(row["engine_vs_fcl_cpu"].get<double>(), row["fcl_cpu_ns"].get<double>() / row["engine_cpu_ns"].get<double>());
     EXPECT_EQ(row["fcl_colliding_samples"].get<double>(), 0.0);  // collision-free
     EXPECT_EQ(row["fcl_missed_by_engine"].get<double>(), 0.0);
   } else {
     EXPECT_TRUE(row["engine_vs_fcl"].is_null());
+    EXPECT_TRUE(row["engine_vs_fcl_cpu"].is_null());
   }
 }
 
