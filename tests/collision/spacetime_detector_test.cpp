@@ -1,6 +1,7 @@
 #include "reconfig/collision/spacetime_detector.h"
 
 #include <gtest/gtest.h>
+#include <tbb/task_arena.h>
 
 #include <random>
 #include <sstream>
@@ -278,6 +279,44 @@ TEST(SpacetimeDetector, StoppingEarlyGivesTheGroupsOfAllContacts) {
     }
   EXPECT_GT(pruned, 0);
   EXPECT_LT(contacts, all / 2) << "stopping early should find far fewer contacts";
+}
+
+/// The result does not depend on how many threads detect: the contacts (every field, in
+/// order), groups, containments and work counts of one thread equal those of all cores, with
+/// the breadth-first phase short or long (its levels run in parallel) and in both modes.
+TEST(SpacetimeDetector, ResultsDoNotDependOnTheNumberOfThreads) {
+  tbb::task_arena one_thread(1);
+  int contacts = 0;
+  for (std::uint32_t seed = 300; seed < 306; ++seed) {
+    testing::RandomSceneOptions scene_options;
+    scene_options.spread = seed % 2 == 0 ? 0.4 : 0.9;
+    const scene::Reconfigurable scene = testing::random_scene(seed, scene_options);
+    DetectorOptions options;
+    options.conservative = seed % 3 == 0;
+    options.breadth_first_items = seed % 2 == 0 ? 64 : 8192;
+    Detected alone;
+    one_thread.execute([&] { alone = detect(scene, options); });
+    const Detected all = detect(scene, options);
+    ASSERT_EQ(alone.contacts.size(), all.contacts.size()) << "seed " << seed;
+    for (std::size_t i = 0; i < all.contacts.size(); ++i) {
+      const TriangleContact &x = alone.contacts[i], &y = all.contacts[i];
+      EXPECT_TRUE(x.part_a == y.part_a && x.triangle_a == y.triangle_a && x.part_b == y.part_b &&
+                  x.triangle_b == y.triangle_b && x.t0 == y.t0 && x.t1 == y.t1 && x.box.min() == y.box.min() &&
+                  x.box.max() == y.box.max() && x.possible == y.possible && x.step_t0 == y.step_t0 &&
+                  x.step_t1 == y.step_t1)
+          << "seed " << seed << " contact " << i;
+    }
+    EXPECT_TRUE(same_groups(alone.groups, all.groups)) << "seed " << seed;
+    ASSERT_EQ(alone.containments.size(), all.containments.size()) << "seed " << seed;
+    for (std::size_t i = 0; i < all.containments.size(); ++i)
+      EXPECT_TRUE(alone.containments[i].inner == all.containments[i].inner &&
+                  alone.containments[i].t0 == all.containments[i].t0 && alone.containments[i].t1 == all.containments[i].t1)
+          << "seed " << seed;
+    EXPECT_EQ(alone.stats.bound_tests, all.stats.bound_tests) << "seed " << seed;
+    EXPECT_EQ(alone.stats.narrow_phase, all.stats.narrow_phase) << "seed " << seed;
+    contacts += static_cast<int>(all.contacts.size());
+  }
+  EXPECT_GT(contacts, 50);  // the scenes collide enough for the comparison to mean something
 }
 
 /// Rounded boxes answer "where" to their resolution and never less: every group of exact
