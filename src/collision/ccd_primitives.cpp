@@ -1,5 +1,6 @@
 #include "reconfig/collision/ccd_primitives.h"
 
+#include "collision/detail/determinant.h"
 #include "reconfig/collision/coplanarity_cubic.h"
 
 #include <algorithm>
@@ -9,6 +10,8 @@
 
 namespace reconfig::collision {
 namespace {
+
+using detail::det3;
 
 /// Four moving points, as coordinates at t = 0 and t = 1 (x[k][axis], k = vertex).
 struct MovingQuad {
@@ -122,10 +125,6 @@ inline bool separated_along_directions(const double f[8][3], const double d[3], 
 /// domain, already excludes far misses, and a contact would otherwise cost a descent of
 /// dozens of boxes to the tolerance.
 constexpr int kWitnessAfterBoxes = 1;
-
-double det3(const double x[3], const double y[3], const double z[3]) {
-  return x[0] * (y[1] * z[2] - y[2] * z[1]) + x[1] * (y[2] * z[0] - y[0] * z[2]) + x[2] * (y[0] * z[1] - y[1] * z[0]);
-}
 
 double cubic_at(const double c[4], double t) { return ((c[3] * t + c[2]) * t + c[1]) * t + c[0]; }
 

@@ -4,14 +4,14 @@
 #include <cassert>
 #include <cmath>
 
+#include "collision/detail/determinant.h"
+
 namespace reconfig::collision {
 namespace {
 
-constexpr double kEpsilon = 0x1p-53;
+using detail::det3;
 
-double det(const double x[3], const double y[3], const double z[3]) {
-  return x[0] * (y[1] * z[2] - y[2] * z[1]) + x[1] * (y[2] * z[0] - y[0] * z[2]) + x[2] * (y[0] * z[1] - y[1] * z[0]);
-}
+constexpr double kEpsilon = 0x1p-53;
 
 }  // namespace
 
@@ -54,8 +54,8 @@ CoplanarityCubic::CoplanarityCubic(const MovingPoints& points, double t_min, dou
 
   const auto& [x0, y0, z0] = v[0];
   const auto& [x1, y1, z1] = v[1];
-  coefficients_ = {det(x0, y0, z0), (det(x1, y0, z0) + det(x0, y1, z0) + det(x0, y0, z1)) / 3,
-                   (det(x0, y1, z1) + det(x1, y0, z1) + det(x1, y1, z0)) / 3, det(x1, y1, z1)};
+  coefficients_ = {det3(x0, y0, z0), (det3(x1, y0, z0) + det3(x0, y1, z0) + det3(x0, y0, z1)) / 3,
+                   (det3(x0, y1, z1) + det3(x1, y0, z1) + det3(x1, y1, z0)) / 3, det3(x1, y1, z1)};
 }
 
 Coplanarity CoplanarityCubic::classify() const {
