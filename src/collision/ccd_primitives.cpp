@@ -308,24 +308,22 @@ PrimitiveCcdResult solve(const MovingQuad& q, const PrimitiveCcdOptions& options
 
     // F at the 8 corners: index c = 4·(t hi) + 2·(u hi) + (v hi).
     double f[8][3];
-    // Terms at one end of the box, kept for the direction tests: its start, or its end when
-    // looking for contacts before a known one (the geometry near that contact separates best).
-    double d0[3], e10[3], e20[3];
-    const int direction_end = result.hit ? 1 : 0;
+    // The terms at both ends of the box (index: t hi); one end's are kept for the direction
+    // tests: its start, or its end when looking for contacts before a known one (the geometry
+    // near that contact separates best).
+    double d[2][3], e1[2][3], e2[2][3];
     for (int ti = 0; ti < 2; ++ti) {
-      double d[3], e1[3], e2[3];
-      terms_at<kind>(q, ti ? box.hi[0] : box.lo[0], d, e1, e2);
-      if (ti == direction_end)
-        for (int i = 0; i < 3; ++i) d0[i] = d[i], e10[i] = e1[i], e20[i] = e2[i];
+      terms_at<kind>(q, ti ? box.hi[0] : box.lo[0], d[ti], e1[ti], e2[ti]);
       for (int ui = 0; ui < 2; ++ui) {
         const double u = ui ? box.hi[1] : box.lo[1];
         for (int vi = 0; vi < 2; ++vi) {
           const double v = vi ? box.hi[2] : box.lo[2];
           double* fc = f[4 * ti + 2 * ui + vi];
-          for (int i = 0; i < 3; ++i) fc[i] = d[i] + u * e1[i] + v * e2[i];
+          for (int i = 0; i < 3; ++i) fc[i] = d[ti][i] + u * e1[ti][i] + v * e2[ti][i];
         }
       }
     }
+    const int direction_end = result.hit ? 1 : 0;
 
     bool excluded = false;
     bool small = true;
@@ -338,7 +336,8 @@ PrimitiveCcdResult solve(const MovingQuad& q, const PrimitiveCcdOptions& options
       if (lo > margin || hi < -margin) excluded = true;
       if (hi - lo > tolerance) small = false;
     }
-    if (excluded || separated_along_directions(f, d0, e10, e20, box, margin)) continue;
+    if (excluded || separated_along_directions(f, d[direction_end], e1[direction_end], e2[direction_end], box, margin))
+      continue;
 
     int split = -1;
     // Refining the first contact time: a box that cannot be excluded and is as short as the
