@@ -50,11 +50,9 @@ double sample_range(PartProxy& proxy, const std::function<double(double, double)
     sample(proxy, scene, transition, part, {t0, t1});
     return 0;
   }
-  const std::vector<double> times = motion::adaptive_time_samples(bound, t0, t1, tolerance, min_step);
-  sample(proxy, scene, transition, part, times);
-  double reached = 0;
-  for (std::size_t k = 0; k + 1 < times.size(); ++k) reached = std::max(reached, bound(times[k], times[k + 1]));
-  return reached;
+  const motion::AdaptiveSamples samples = motion::adaptive_time_samples(bound, t0, t1, tolerance, min_step);
+  sample(proxy, scene, transition, part, samples.times);
+  return samples.deviation;
 }
 
 bool same_pose(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b) { return a.matrix() == b.matrix(); }

@@ -98,10 +98,12 @@ std::vector<double> chord_gaps(const std::vector<double>& bps, const std::vector
   const double t0 = bps.front(), t1 = bps.back();
   std::vector<double> gaps;
   gaps.reserve(bps.size());
-  for (std::size_t k = 0; k < bps.size(); ++k) {
+  gaps.push_back(0.0);  // the chord passes through the path's ends
+  for (std::size_t k = 1; k + 1 < bps.size(); ++k) {
     const double w = lerp_weight(bps[k], t0, t1);
     gaps.push_back(distance(Value(path[k] - ((1 - w) * path.front() + w * path.back()))));
   }
+  if (bps.size() > 1) gaps.push_back(0.0);
   return gaps;
 }
 
@@ -217,11 +219,10 @@ MotionBound screw_motion_bound(const ScrewTrack& track, double radius, double t0
   return out;
 }
 
-std::vector<double> adaptive_time_samples(
-    const std::function<double(double, double)>& deviation_bound, double t0, double t1,
-    double tolerance, double min_step) {
+AdaptiveSamples adaptive_time_samples(const std::function<double(double, double)>& deviation_bound, double t0,
+                                      double t1, double tolerance, double min_step) {
   assert(t0 <= t1 && tolerance > 0.0 && min_step > 0.0);
-  std::vector<double> out{t0};
+  AdaptiveSamples out{{t0}, 0.0};
   if (!(t1 > t0)) return out;
   // Depth-first on an explicit stack of intervals, right halves pushed first so that the
   // output comes out in increasing time.
@@ -229,15 +230,17 @@ std::vector<double> adaptive_time_samples(
   while (!stack.empty()) {
     const auto [a, b] = stack.back();
     stack.pop_back();
-    if (b - a <= min_step || deviation_bound(a, b) <= tolerance) {
-      out.push_back(b);
+    const double bound = deviation_bound(a, b);
+    if (bound <= tolerance || b - a <= min_step) {
+      out.times.push_back(b);
+      out.deviation = std::max(out.deviation, bound);
       continue;
     }
     const double m = 0.5 * (a + b);
     stack.emplace_back(m, b);
     stack.emplace_back(a, m);
   }
-  out.back() = t1;
+  out.times.back() = t1;
   return out;
 }
 

@@ -176,9 +176,13 @@ TEST(MotionBounds, AdaptiveSamplesMeetTheTolerance) {
   const Eigen::Vector3d c = random_vector(rng);
   const ScrewTrack track = random_screw_track(rng, 5, c);
   const double r = 0.8, tol = 1e-3;
-  const auto samples = adaptive_time_samples(
-      [&](double a, double b) { return screw_motion_bound(track, r, a, b).deviation; },
-      track.start_time(), track.end_time(), tol);
+  const auto bound = [&](double a, double b) { return screw_motion_bound(track, r, a, b).deviation; };
+  const AdaptiveSamples adaptive = adaptive_time_samples(bound, track.start_time(), track.end_time(), tol);
+  const std::vector<double>& samples = adaptive.times;
+  double largest = 0;
+  for (std::size_t i = 0; i + 1 < samples.size(); ++i) largest = std::max(largest, bound(samples[i], samples[i + 1]));
+  EXPECT_EQ(adaptive.deviation, largest);
+  EXPECT_LE(adaptive.deviation, tol);
   ASSERT_GE(samples.size(), 3u);
   EXPECT_EQ(samples.front(), track.start_time());
   EXPECT_EQ(samples.back(), track.end_time());

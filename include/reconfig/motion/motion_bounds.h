@@ -61,17 +61,23 @@ MotionBound keyframed_motion_bound(const BezierTranslationTrack& translation,
 /// @param t0, t1  interval, t0 <= t1
 MotionBound screw_motion_bound(const ScrewTrack& track, double radius, double t0, double t1);
 
+/// The samples `adaptive_time_samples` chooses, and the largest deviation bound over their steps.
+struct AdaptiveSamples {
+  std::vector<double> times;  ///< t0 = τ_0 < τ_1 < ... < τ_m = t1
+  double deviation = 0.0;     ///< max over the steps of `deviation_bound(τ_i, τ_{i+1})`
+};
+
 /// Times t0 = τ_0 < τ_1 < ... < τ_m = t1 such that `deviation_bound(τ_i, τ_{i+1})` <=
 /// tolerance on every step, found by recursive bisection; a step narrower than `min_step`
-/// is accepted as it is (so the result is finite even if the bound never gets small).
+/// is accepted as it is (so the result is finite even if the bound never gets small: the
+/// reported deviation then exceeds the tolerance). Every step's bound is evaluated exactly once.
 /// Deterministic. Typical use:
 /// `adaptive_time_samples([&](double a, double b) { return screw_motion_bound(track, r, a, b).deviation; }, 0, 1, 1e-3)`.
 /// @param deviation_bound  (a, b) ↦ bound on the deviation over [a, b]
 /// @param t0, t1           interval, t0 <= t1
 /// @param tolerance        > 0
 /// @param min_step         > 0, smallest step the bisection produces
-std::vector<double> adaptive_time_samples(
-    const std::function<double(double, double)>& deviation_bound, double t0, double t1,
-    double tolerance, double min_step = 1e-6);
+AdaptiveSamples adaptive_time_samples(const std::function<double(double, double)>& deviation_bound, double t0,
+                                      double t1, double tolerance, double min_step = 1e-6);
 
 }  // namespace reconfig::motion
