@@ -6,6 +6,7 @@
 #include <array>
 #include <limits>
 #include <optional>
+#include <utility>
 
 namespace reconfig::collision {
 
@@ -32,10 +33,72 @@ constexpr std::optional<DopFamily> dop_family(int halfspaces) {
   return std::nullopt;
 }
 
-/// The axes of a family as 4D directions (spatial part, temporal part), not normalized.
-/// Axis i of `Kdop<family>` measures `direction(i) · (x, y, z, t)`.
+/// The axes of a family as 4D directions with components in {−1, 0, 1}: the unit axes of the
+/// family's `dims` coordinates first, then every other such direction whose first nonzero
+/// component is +1 (one per ± pair), in counting order (base 3, first coordinate fastest); the
+/// 8- and 28-DOP add the time axis last.
+template <DopFamily family>
+constexpr std::array<std::array<int, 4>, axis_count(family)> dop_axis_signs() {
+  constexpr int kDims = family == DopFamily::k80 ? 4 : 3;
+  constexpr bool kTimeAxis = family != DopFamily::k80;
+  constexpr int kCount = axis_count(family);
+  std::array<std::array<int, 4>, kCount> axes{};
+  int n = 0;
+  for (int d = 0; d < kDims; ++d) axes[n++][d] = 1;
+  int total = 1;
+  for (int d = 0; d < kDims; ++d) total *= 3;
+  for (int code = 0; code < total && n + (kTimeAxis ? 1 : 0) < kCount; ++code) {
+    std::array<int, 4> v{};
+    int c = code, nonzero = 0, first = 0;
+    for (int d = 0; d < kDims; ++d, c /= 3) {
+      v[d] = c % 3 - 1;
+      if (v[d] != 0 && nonzero++ == 0) first = v[d];
+    }
+    if (nonzero >= 2 && first == 1) axes[n++] = v;
+  }
+  if (kTimeAxis) axes[n++] = {0, 0, 0, 1};
+  return axes;
+}
+
+/// The axes of a family as 4D directions (spatial part, temporal part), not normalized
+/// (`dop_axis_signs`). Axis i of `Kdop<family>` measures `direction(i) · (x, y, z, t)`.
 template <DopFamily family>
 const std::array<Eigen::Vector4d, axis_count(family)>& dop_axes();
+
+namespace dop_detail {
+/// s₀x + s₁y + s₂z + s₃t for signs in {−1, 0, 1} known at compile time: additions only.
+template <int s0, int s1, int s2, int s3>
+inline double signed_sum(double x, double y, double z, double t) {
+  constexpr int kSigns[4] = {s0, s1, s2, s3};
+  const double values[4] = {x, y, z, t};
+  double sum = 0;
+  bool started = false;
+  [&]<std::size_t... I>(std::index_sequence<I...>) {
+    (
+        [&] {
+          if constexpr (kSigns[I] != 0) {
+            const double term = kSigns[I] > 0 ? values[I] : -values[I];
+            sum = started ? sum + term : term;
+            started = true;
+          }
+        }(),
+        ...);
+  }(std::make_index_sequence<4>());
+  return sum;
+}
+}  // namespace dop_detail
+
+/// The values of the spacetime point (p, t) along every axis of a family, with additions
+/// only (the axes' components are −1, 0 or 1).
+template <DopFamily family>
+inline Eigen::Matrix<double, axis_count(family), 1> axis_values(const Eigen::Vector3d& p, double t) {
+  constexpr auto kSigns = dop_axis_signs<family>();
+  Eigen::Matrix<double, axis_count(family), 1> out;
+  [&]<std::size_t... J>(std::index_sequence<J...>) {
+    ((out[J] = dop_detail::signed_sum<kSigns[J][0], kSigns[J][1], kSigns[J][2], kSigns[J][3]>(p.x(), p.y(), p.z(), t)), ...);
+  }(std::make_index_sequence<axis_count(family)>());
+  return out;
+}
 
 /// A k-DOP: for each axis the interval [lo, hi] of `axis · point` over the bounded set.
 /// Default-constructed it is empty (lo = +∞, hi = −∞).

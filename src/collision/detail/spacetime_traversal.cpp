@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cstdint>
 #include <cassert>
 #include <cmath>
 #include <functional>
@@ -94,30 +95,30 @@ PairTimeline make_timeline(const std::vector<PartProxy>& proxies, int a, int b, 
   return line;
 }
 
-/// The k-DOP axes of a family seen from a part's rest frame at one placement: row j of U is
-/// u_j = Lᵀ ds_j (ds_j the spatial part of axis j), so that axis j of a rest point v measures
-/// U v + offset; `reach` = |U| (entrywise), for boxes; offset_j = ds_j·x + dt_j τ.
+/// A part's placement at one sample, with what bounding along a family's axes needs: a rest
+/// point's axis values are those of its placed point (`axis_values`, additions only), and a
+/// rest-frame box's half extents along axis j are reach_j · half, where reach_j = |Lᵀ ds_j|
+/// (entrywise; ds_j the spatial part of axis j).
 template <DopFamily family>
 struct SampleAxes {
   static constexpr int K = Kdop<family>::kAxes;
   using Axes = Eigen::Matrix<double, K, 1>;
-  Eigen::Matrix<double, K, 3> U, reach;
-  Axes offset;
+  Affine map;
+  double t = 0;
+  Eigen::Matrix<double, K, 3> reach;
 
   /// The axes at placement `m`, at time `t`.
-  SampleAxes(const Affine& m, double t) {
+  SampleAxes(const Affine& m, double time) : map(m), t(time) {
     const auto& dirs = dop_axes<family>();
-    for (int j = 0; j < K; ++j) {
-      const Eigen::Vector3d ds = dirs[j].template head<3>();
-      U.row(j) = (m.L.transpose() * ds).transpose();
-      offset[j] = ds.dot(m.x) + dirs[j][3] * t;
-    }
-    reach = U.cwiseAbs();
+    for (int j = 0; j < K; ++j) reach.row(j) = (m.L.transpose() * dirs[j].template head<3>()).cwiseAbs().transpose();
   }
+
+  /// The values of a placed rest point along every axis.
+  Axes point_values(const Eigen::Vector3d& rest) const { return axis_values<family>(map(rest), t); }
 
   /// The extents [lo, hi] of a rest-frame box (center, half extents) along every axis.
   std::pair<Axes, Axes> box_extents(const Eigen::Vector3d& center, const Eigen::Vector3d& half) const {
-    const Axes middle = U * center + offset, spread = reach * half;
+    const Axes middle = point_values(center), spread = reach * half;
     return {middle - spread, middle + spread};
   }
   EIGEN_MAKE_ALIGNED_OPERATOR_NEW
@@ -222,8 +223,7 @@ struct Traversal {
       const Eigen::Vector3d v0 = m.V.row(m.F(node.triangle, 0)), v1 = m.V.row(m.F(node.triangle, 1)),
                             v2 = m.V.row(m.F(node.triangle, 2));
       for (int s = s0; s <= s1; ++s) {
-        const Axes p0 = samples[s].U * v0 + samples[s].offset, p1 = samples[s].U * v1 + samples[s].offset,
-                   p2 = samples[s].U * v2 + samples[s].offset;
+        const Axes p0 = samples[s].point_values(v0), p1 = samples[s].point_values(v1), p2 = samples[s].point_values(v2);
         add(s, p0.cwiseMin(p1).cwiseMin(p2), p0.cwiseMax(p1).cwiseMax(p2));
       }
     } else {
@@ -287,6 +287,50 @@ struct Traversal {
     const Affine& map = lines[pair].maps[side][s];
     return {map(m.V.row(m.F(triangle, 0))), map(m.V.row(m.F(triangle, 1))), map(m.V.row(m.F(triangle, 2)))};
   }
+};
+
+/// The bounds of the nodes one thread met last, by (pair, side, node, sample range): the two
+/// children of a split item share the node that was not split, whose bound would otherwise be
+/// computed again. Direct-mapped per side: a newer bound of the same side may take its slot.
+template <DopFamily family>
+class BoundCache {
+ public:
+  using Dop = Kdop<family>;
+  struct Bound {
+    Dop dop;
+    std::array<Dop, 2> ends;  ///< at the range's ends (single steps only)
+  };
+
+  /// The node's bound over [s0, s1] (`Traversal::bound`, with the ends for a single step),
+  /// valid until the next call for the same side.
+  const Bound& get(const Traversal<family>& tr, int pair, int side, int node, int s0, int s1) {
+    const Key key{pair, node, s0, s1};
+    Slot& slot = slots_[side][slot_of(key)];
+    if (!(slot.key == key)) {
+      slot.key = key;
+      slot.bound.dop = tr.bound(pair, side, node, s0, s1, s1 - s0 == 1 ? &slot.bound.ends : nullptr);
+    }
+    return slot.bound;
+  }
+
+ private:
+  struct Key {
+    int pair = -1, node = 0, s0 = 0, s1 = 0;
+    bool operator==(const Key&) const = default;
+  };
+  struct Slot {
+    Key key;
+    Bound bound;
+  };
+  static constexpr int kSlotBits = 9;
+  static std::size_t slot_of(const Key& k) {
+    std::uint64_t h = static_cast<std::uint32_t>(k.node) * 0x9E3779B97F4A7C15ull;
+    h ^= (static_cast<std::uint64_t>(k.s0) << 32 | static_cast<std::uint32_t>(k.s1)) * 0xC2B2AE3D27D4EB4Full;
+    h ^= static_cast<std::uint64_t>(k.pair) * 0x165667B19E3779F9ull;
+    return static_cast<std::size_t>(h >> (64 - kSlotBits));
+  }
+  std::array<std::vector<Slot>, 2> slots_{std::vector<Slot>(std::size_t{1} << kSlotBits),
+                                          std::vector<Slot>(std::size_t{1} << kSlotBits)};
 };
 
 double spatial_extent(const auto& dop) {
@@ -353,7 +397,8 @@ double protrusion(const Traversal<family>& tr, const WorkItem& item, const ItemC
 /// @return the item's `protrusion` when it was split (its children's contacts can lie no
 ///         further outside the groups), else 0
 template <DopFamily family>
-double process(const Traversal<family>& tr, const WorkItem& item, std::vector<WorkItem>& next, const ItemContext& context) {
+double process(const Traversal<family>& tr, const WorkItem& item, std::vector<WorkItem>& next, const ItemContext& context,
+               BoundCache<family>& bounds) {
   DetectionStats& stats = context.stats;
   const PairTimeline& line = tr.lines[item.pair];
   const BodyTree::Node& na = tr.tree(item.pair, 0).node(item.node_a);
@@ -365,9 +410,13 @@ double process(const Traversal<family>& tr, const WorkItem& item, std::vector<Wo
   double urgency = std::numeric_limits<double>::infinity();
   if (!(na.leaf() && nb.leaf() && single_step)) {  // that case is culled by `meeting_pieces`, tighter
     ++stats.bound_tests;
-    std::array<Kdop<family>, 2> ends_a, ends_b;  // the k-DOPs at the ends of a single step
-    da = tr.bound(item.pair, 0, item.node_a, item.s0, item.s1, single_step ? &ends_a : nullptr);
-    db = tr.bound(item.pair, 1, item.node_b, item.s0, item.s1, single_step ? &ends_b : nullptr);
+    // The k-DOPs over the range, and at the ends of a single step.
+    const auto& bound_a = bounds.get(tr, item.pair, 0, item.node_a, item.s0, item.s1);
+    const auto& bound_b = bounds.get(tr, item.pair, 1, item.node_b, item.s0, item.s1);
+    da = bound_a.dop;
+    db = bound_b.dop;
+    const std::array<Kdop<family>, 2>& ends_a = bound_a.ends;
+    const std::array<Kdop<family>, 2>& ends_b = bound_b.ends;
     if (!da.overlaps(db)) return 0;
     const double step_t0 = line.times[item.s0], step_t1 = line.times[item.s1];
     double meet_t0 = step_t0, meet_t1 = step_t1;  // when the nodes may meet
@@ -612,6 +661,7 @@ template <DopFamily family>
 bool run_traversal(const Traversal<family>& tr, std::vector<TriangleContact>& contacts, DetectionStats& stats,
                    const DetectCallbacks& callbacks) {
   FoundSteps<family> found(tr);
+  tbb::enumerable_thread_specific<BoundCache<family>> bound_caches;
   const auto step_groups = [&](int line, int step) { return found.of(line, step); };
   std::vector<WorkItem> level;
   int max_depth = 1, max_steps = 1;
@@ -638,7 +688,7 @@ bool run_traversal(const Traversal<family>& tr, std::vector<TriangleContact>& co
     const auto run = [&](std::size_t begin, std::size_t end) {
       auto& next = next_parts.local();
       const ItemContext context{step_groups, found_parts.local(), stat_parts.local()};
-      for (std::size_t i = begin; i < end; ++i) process(tr, level[i], next, context);
+      for (std::size_t i = begin; i < end; ++i) process(tr, level[i], next, context, bound_caches.local());
     };
     // Items of these first levels span many steps (a bound over every sample of their range
     // each): worth a task of a few.
@@ -694,13 +744,14 @@ bool run_traversal(const Traversal<family>& tr, std::vector<TriangleContact>& co
         // far (children inherit their parent's protrusion, which bounds theirs), so that the
         // contacts that make the groups' extremes come early and prune the rest; first of all
         // the items where nothing is known yet, deepest first (to find a first contact soon).
+        BoundCache<family>& bounds = bound_caches.local();
         UrgencyQueue<WorkItem>& queue = queues.local();  // empty, its buckets' memory kept from earlier steps
         for (std::size_t i = steps[g].second; i-- > steps[g].first;) queue.push(items[i], kUnknownUrgency);
         std::vector<WorkItem> children;
         while (!queue.empty()) {
           const WorkItem item = queue.pop();
           const std::size_t known = local.size();
-          const double urgency = process(tr, item, children, context);
+          const double urgency = process(tr, item, children, context, bounds);
           for (std::size_t c = known; c < local.size(); ++c) found.add(local[c].line, local[c].contact);
           for (auto child = children.rbegin(); child != children.rend(); ++child) queue.push(*child, urgency);
           children.clear();
