@@ -37,16 +37,28 @@ template <DopFamily family>
 unsigned meeting_pieces(const MovingTriangle& a0, const MovingTriangle& a1, const MovingTriangle& b0,
                         const MovingTriangle& b1, double reach) {
   constexpr int K = Kdop<family>::kAxes;
+  using Axes = Eigen::Matrix<double, K, 1>;
+  // Every corner's values along every axis at the step's ends (the time term is left out).
+  std::array<Axes, 3> pa[2], pb[2];
+  for (int c = 0; c < 3; ++c) {
+    pa[0][c] = axis_values<family>(a0[c], 0), pa[1][c] = axis_values<family>(a1[c], 0);
+    pb[0][c] = axis_values<family>(b0[c], 0), pb[1][c] = axis_values<family>(b1[c], 0);
+  }
   const auto& axes = dop_axes<family>();
+  Axes grow;
+  for (int j = 0; j < K; ++j) grow[j] = reach * axes[j].template head<3>().norm();
+  // Over the whole step first: a pair apart along some axis throughout needs no pieces.
+  {
+    Axes lo_a = pa[0][0], hi_a = pa[0][0], lo_b = pb[0][0], hi_b = pb[0][0];
+    for (int end = 0; end < 2; ++end)
+      for (int c = 0; c < 3; ++c) {
+        lo_a = lo_a.cwiseMin(pa[end][c]), hi_a = hi_a.cwiseMax(pa[end][c]);
+        lo_b = lo_b.cwiseMin(pb[end][c]), hi_b = hi_b.cwiseMax(pb[end][c]);
+      }
+    if (((lo_a - grow).array() > hi_b.array()).any() || (lo_b.array() > (hi_a + grow).array()).any()) return 0;
+  }
   unsigned meeting = (1u << kCullPieces) - 1;
   for (int j = 0; j < K && meeting != 0; ++j) {
-    const Eigen::Vector3d axis = axes[j].template head<3>();
-    const double grow = reach * axis.norm();
-    double pa[2][3], pb[2][3];
-    for (int c = 0; c < 3; ++c) {
-      pa[0][c] = axis.dot(a0[c]), pa[1][c] = axis.dot(a1[c]);
-      pb[0][c] = axis.dot(b0[c]), pb[1][c] = axis.dot(b1[c]);
-    }
     // Range of each triangle's projection at each piece boundary; a piece's range spans its two ends.
     double lo_a[kCullPieces + 1], hi_a[kCullPieces + 1], lo_b[kCullPieces + 1], hi_b[kCullPieces + 1];
     for (int k = 0; k <= kCullPieces; ++k) {
@@ -54,14 +66,14 @@ unsigned meeting_pieces(const MovingTriangle& a0, const MovingTriangle& a1, cons
       lo_a[k] = lo_b[k] = HUGE_VAL;
       hi_a[k] = hi_b[k] = -HUGE_VAL;
       for (int c = 0; c < 3; ++c) {
-        const double va = (1 - mu) * pa[0][c] + mu * pa[1][c], vb = (1 - mu) * pb[0][c] + mu * pb[1][c];
+        const double va = (1 - mu) * pa[0][c][j] + mu * pa[1][c][j], vb = (1 - mu) * pb[0][c][j] + mu * pb[1][c][j];
         lo_a[k] = std::min(lo_a[k], va), hi_a[k] = std::max(hi_a[k], va);
         lo_b[k] = std::min(lo_b[k], vb), hi_b[k] = std::max(hi_b[k], vb);
       }
     }
     for (int k = 0; k < kCullPieces; ++k) {
       if (!(meeting & (1u << k))) continue;
-      const double a_lo = std::min(lo_a[k], lo_a[k + 1]) - grow, a_hi = std::max(hi_a[k], hi_a[k + 1]) + grow;
+      const double a_lo = std::min(lo_a[k], lo_a[k + 1]) - grow[j], a_hi = std::max(hi_a[k], hi_a[k + 1]) + grow[j];
       const double b_lo = std::min(lo_b[k], lo_b[k + 1]), b_hi = std::max(hi_b[k], hi_b[k + 1]);
       if (a_lo > b_hi || b_lo > a_hi) meeting &= ~(1u << k);
     }

@@ -406,18 +406,19 @@ double process(const Traversal<family>& tr, const WorkItem& item, std::vector<Wo
   const bool single_step = item.s1 - item.s0 == 1;
   const double deviation_a = tr.options.conservative ? tr.proxies[line.a].deviation : 0.0;
   const double deviation_b = tr.options.conservative ? tr.proxies[line.b].deviation : 0.0;
-  Kdop<family> da, db;
+  const Kdop<family>* da = nullptr;  // the nodes' k-DOPs over the range (in the bound cache)
+  const Kdop<family>* db = nullptr;
   double urgency = std::numeric_limits<double>::infinity();
   if (!(na.leaf() && nb.leaf() && single_step)) {  // that case is culled by `meeting_pieces`, tighter
     ++stats.bound_tests;
     // The k-DOPs over the range, and at the ends of a single step.
     const auto& bound_a = bounds.get(tr, item.pair, 0, item.node_a, item.s0, item.s1);
     const auto& bound_b = bounds.get(tr, item.pair, 1, item.node_b, item.s0, item.s1);
-    da = bound_a.dop;
-    db = bound_b.dop;
+    da = &bound_a.dop;
+    db = &bound_b.dop;
     const std::array<Kdop<family>, 2>& ends_a = bound_a.ends;
     const std::array<Kdop<family>, 2>& ends_b = bound_b.ends;
-    if (!da.overlaps(db)) return 0;
+    if (!da->overlaps(*db)) return 0;
     const double step_t0 = line.times[item.s0], step_t1 = line.times[item.s1];
     double meet_t0 = step_t0, meet_t1 = step_t1;  // when the nodes may meet
     if (single_step) {
@@ -427,7 +428,7 @@ double process(const Traversal<family>& tr, const WorkItem& item, std::vector<Wo
       if (mu1 < 1) meet_t1 = std::min(step_t1, step_t0 + mu1 * (step_t1 - step_t0));
     }
     const auto box_between = [&](double t0, double t1) {
-      if (t0 <= step_t0 && t1 >= step_t1) return spatial_box(da).intersection(spatial_box(db));
+      if (t0 <= step_t0 && t1 >= step_t1) return spatial_box(*da).intersection(spatial_box(*db));
       if (single_step) {
         // Within one step a node's box at a time lies within the interpolation of its boxes at
         // the step's ends (its center moves linearly, and its reach |L|·half is convex in time),
@@ -574,7 +575,7 @@ double process(const Traversal<family>& tr, const WorkItem& item, std::vector<Wo
   // Split the dimension that makes the bounds loose: time when the motion over the range
   // sweeps further than the nodes are large, else the larger node.
   const double size_a = 2 * na.half.maxCoeff(), size_b = 2 * nb.half.maxCoeff();
-  const double sweep = std::max(spatial_extent(da) - size_a, spatial_extent(db) - size_b);
+  const double sweep = std::max(spatial_extent(*da) - size_a, spatial_extent(*db) - size_b);
   if (!single_step && sweep > std::min(size_a, size_b)) {
     split_time();
   } else if (!na.leaf() && (nb.leaf() || size_a >= size_b)) {
