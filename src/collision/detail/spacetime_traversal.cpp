@@ -322,7 +322,7 @@ class BoundCache {
     Key key;
     Bound bound;
   };
-  static constexpr int kSlotBits = 9;
+  static constexpr int kSlotBits = 8;
   static std::size_t slot_of(const Key& k) {
     std::uint64_t h = static_cast<std::uint32_t>(k.node) * 0x9E3779B97F4A7C15ull;
     h ^= (static_cast<std::uint64_t>(k.s0) << 32 | static_cast<std::uint32_t>(k.s1)) * 0xC2B2AE3D27D4EB4Full;
