@@ -9,49 +9,60 @@
 namespace reconfig::collision {
 namespace {
 
-/// (a, b) ↦ bound on how far the part's vertices stray from straight lines over [a, b]; empty
-/// when the part has no track (it holds still).
-std::function<double(double, double)> deviation_bound(const scene::Reconfigurable& scene, int transition, int part) {
+/// A part's motion over a transition, its tracks built once: its pose at any time (the same,
+/// bit for bit, as `Reconfigurable::pose_at`) and (a, b) ↦ a bound on how far its vertices stray
+/// from straight lines over [a, b], empty when the part has no track (it holds still).
+struct PartMotion {
+  std::function<motion::Pose(double)> pose;
+  std::function<double(double, double)> deviation;
+};
+
+PartMotion part_motion(const scene::Reconfigurable& scene, int transition, int part) {
   const scene::Part& p = scene.parts[part];
   const scene::Transition& tr = scene.transitions[transition];
+  const motion::Pose hold = scene.states[scene.find_state(tr.from)].pose_of(p.name);
   const auto it = tr.tracks.find(p.name);
-  if (it == tr.tracks.end()) return {};
+  if (it == tr.tracks.end()) return {[hold](double) { return hold; }, {}};
   const double radius = (p.mesh.V.rowwise() - p.center.transpose()).rowwise().norm().maxCoeff();
   if (const auto* screw = std::get_if<scene::ScrewPosesTrack>(&it->second)) {
     auto track = std::make_shared<motion::ScrewTrack>(screw->poses, p.center);
-    return [track, radius](double a, double b) { return motion::screw_motion_bound(*track, radius, a, b).deviation; };
+    return {[track](double t) { return track->evaluate(t); },
+            [track, radius](double a, double b) { return motion::screw_motion_bound(*track, radius, a, b).deviation; }};
   }
   const auto& keyed = std::get<scene::KeyframedTrack>(it->second);
-  const motion::Pose hold = scene.states[scene.find_state(tr.from)].pose_of(p.name);
   const Eigen::Vector3d x = hold.translation;
   auto translation = std::make_shared<motion::BezierTranslationTrack>(
       keyed.translation.empty() ? std::vector<motion::TranslationKey>{{0.0, x, x, x}} : keyed.translation);
   auto rotation = std::make_shared<motion::SlerpRotationTrack>(
       keyed.rotation.empty() ? std::vector<motion::RotationKey>{{0.0, hold.rotation}} : keyed.rotation);
-  return [translation, rotation, radius](double a, double b) {
-    return motion::keyframed_motion_bound(*translation, *rotation, radius, a, b).deviation;
-  };
+  return {[translation, rotation, hold, keyed_translation = !keyed.translation.empty(),
+           keyed_rotation = !keyed.rotation.empty()](double t) {
+            motion::Pose pose = hold;
+            if (keyed_translation) pose.translation = translation->evaluate(t);
+            if (keyed_rotation) pose.rotation = rotation->evaluate(t);
+            return pose;
+          },
+          [translation, rotation, radius](double a, double b) {
+            return motion::keyframed_motion_bound(*translation, *rotation, radius, a, b).deviation;
+          }};
 }
 
-void sample(PartProxy& proxy, const scene::Reconfigurable& scene, int transition, int part,
-            const std::vector<double>& times) {
-  const Eigen::Vector3d center = scene.parts[part].center;
+void sample(PartProxy& proxy, const PartMotion& motion, const Eigen::Vector3d& center, const std::vector<double>& times) {
   for (double t : times) {
     proxy.times.push_back(t);
-    proxy.poses.push_back(scene.pose_at(transition, part, t).to_isometry(center));
+    proxy.poses.push_back(motion.pose(t).to_isometry(center));
   }
 }
 
 /// Samples [t0, t1] (both ends included) and returns the deviation bound reached.
-double sample_range(PartProxy& proxy, const std::function<double(double, double)>& bound,
-                    const scene::Reconfigurable& scene, int transition, int part, double tolerance, double t0,
-                    double t1, double min_step) {
-  if (!bound) {
-    sample(proxy, scene, transition, part, {t0, t1});
+double sample_range(PartProxy& proxy, const PartMotion& motion, const Eigen::Vector3d& center, double tolerance,
+                    double t0, double t1, double min_step) {
+  if (!motion.deviation) {
+    sample(proxy, motion, center, {t0, t1});
     return 0;
   }
-  const motion::AdaptiveSamples samples = motion::adaptive_time_samples(bound, t0, t1, tolerance, min_step);
-  sample(proxy, scene, transition, part, samples.times);
+  const motion::AdaptiveSamples samples = motion::adaptive_time_samples(motion.deviation, t0, t1, tolerance, min_step);
+  sample(proxy, motion, center, samples.times);
   return samples.deviation;
 }
 
@@ -74,8 +85,8 @@ PartProxy build_part_proxy(const scene::Reconfigurable& scene, int transition, i
                            double min_step) {
   assert(tolerance > 0);
   PartProxy proxy;
-  proxy.deviation = sample_range(proxy, deviation_bound(scene, transition, part), scene, transition, part, tolerance,
-                                 0.0, 1.0, min_step);
+  proxy.deviation = sample_range(proxy, part_motion(scene, transition, part), scene.parts[part].center, tolerance, 0.0,
+                                 1.0, min_step);
   update_moving(proxy);
   return proxy;
 }

@@ -13,7 +13,9 @@
 #include "reconfig/geometry/primitives.h"
 #include "reconfig/scene/edits.h"
 #include "reconfig/scene/history.h"
+#include "reconfig/scene/scene_file.h"
 #include "support/random_scene.h"
+#include "support/test_data.h"
 
 namespace reconfig::collision {
 namespace {
@@ -454,6 +456,25 @@ TEST(SpacetimeDetector, ProxiesStayWithinTolerance) {
       EXPECT_GT(worst, tolerance / 50) << "steps are not absurdly small";
     }
   }
+}
+
+TEST(SpacetimeDetector, ProxySamplesAreTheScenesPosesBitForBit) {
+  // Keyframed tracks (random scenes), hinged doors (kitchen) and driven screw tracks with
+  // hundreds of keys (the linkage walker): the proxy's poses are `Reconfigurable::pose_at`'s.
+  std::vector<scene::Reconfigurable> scenes = {random_scene(3), random_scene(11)};
+  for (const char* example : {"kitchen", "linkage-walker", "bench-table"})
+    scenes.push_back(scene::load_scene(testing::source_dir() / "examples" / example / "scene.json"));
+  int compared = 0;
+  for (const scene::Reconfigurable& scene : scenes)
+    for (int transition = 0; transition < static_cast<int>(scene.transitions.size()); ++transition)
+      for (int p = 0; p < static_cast<int>(scene.parts.size()); ++p) {
+        const PartProxy proxy = build_part_proxy(scene, transition, p, 1e-3);
+        for (std::size_t k = 0; k < proxy.times.size(); ++k, ++compared) {
+          const Eigen::Isometry3d truth = scene.pose_at(transition, p, proxy.times[k]).to_isometry(scene.parts[p].center);
+          ASSERT_EQ(proxy.poses[k].matrix(), truth.matrix()) << "transition " << transition << ", part " << p << ", t = " << proxy.times[k];
+        }
+      }
+  EXPECT_GT(compared, 1000);
 }
 
 TEST(SpacetimeDetector, PreviewsNarrowDownToTheContacts) {
