@@ -6,9 +6,9 @@
 
 #include <algorithm>
 #include <bit>
-#include <cstdint>
 #include <cassert>
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <map>
 #include <tuple>
@@ -107,7 +107,7 @@ struct SampleAxes {
   double t = 0;
   Eigen::Matrix<double, K, 3> reach;
 
-  /// The axes at placement `m`, at time `t`.
+  /// The axes at placement `m`, at time `time`.
   SampleAxes(const Affine& m, double time) : map(m), t(time) {
     const auto& dirs = dop_axes<family>();
     for (int j = 0; j < K; ++j) reach.row(j) = (m.L.transpose() * dirs[j].template head<3>()).cwiseAbs().transpose();
