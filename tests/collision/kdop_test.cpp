@@ -66,12 +66,16 @@ void expect_axis_values_match_dot_products(std::mt19937& rng) {
       }
     }
   }
-  // The Kdop of a point is its values.
+  // The Kdop of two points spans their values.
   Kdop<family> dop;
-  const Eigen::Vector3d p(0.25, -3, 7.5);
+  const Eigen::Vector3d p(0.25, -3, 7.5), q(-1.5, 2, 0.125);
   dop.extend(p, 0.5);
-  const auto values = axis_values<family>(p, 0.5);
-  for (int j = 0; j < axis_count(family); ++j) EXPECT_EQ(dop.lo[j], values[j]);
+  dop.extend(q, 0.75);
+  const auto at_p = axis_values<family>(p, 0.5), at_q = axis_values<family>(q, 0.75);
+  for (int j = 0; j < axis_count(family); ++j) {
+    EXPECT_EQ(dop.lo[j], std::min(at_p[j], at_q[j]));
+    EXPECT_EQ(dop.hi[j], std::max(at_p[j], at_q[j]));
+  }
 }
 
 TEST(Kdop, AxisValuesAreTheDotProductsWithTheAxes) {

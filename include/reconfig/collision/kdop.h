@@ -123,11 +123,10 @@ struct Kdop {
 
   /// Grows the k-DOP to contain the spacetime point (p, t).
   void extend(const Eigen::Vector3d& p, double t) {
-    const auto& axes = dop_axes<family>();
+    const auto values = axis_values<family>(p, t);
     for (int i = 0; i < kAxes; ++i) {
-      const double v = axes[i].template head<3>().dot(p) + axes[i][3] * t;
-      lo[i] = std::min(lo[i], v);
-      hi[i] = std::max(hi[i], v);
+      lo[i] = std::min(lo[i], values[i]);
+      hi[i] = std::max(hi[i], values[i]);
     }
   }
 
