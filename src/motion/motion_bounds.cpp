@@ -9,21 +9,13 @@
 #include <array>
 #include <cassert>
 #include <cmath>
+#include <utility>
 
 namespace reconfig::motion {
 
 using detail::KeyLocation;
 
 namespace {
-
-/// t0, the key times strictly inside (t0, t1), t1.
-std::vector<double> breakpoints(const std::vector<double>& key_times, double t0, double t1) {
-  std::vector<double> b{t0};
-  for (double s : key_times)
-    if (s > t0 && s < t1) b.push_back(s);
-  b.push_back(t1);
-  return b;
-}
 
 /// Segment containing the open piece (a, b) (a < b), or none when the track is constant
 /// there (before the first key, after the last, single key).
@@ -88,26 +80,46 @@ double operator_norm(const Eigen::Matrix3d& M) {
 
 double lerp_weight(double t, double t0, double t1) { return t1 > t0 ? (t - t0) / (t1 - t0) : 0.0; }
 
-/// Shared bookkeeping: the part's center follows xc(t), its frame turns by R(t), given at the
-/// breakpoints `bps` of [t0, t1] (the first is t0, the last t1). Each piece [a, b] reports a
-/// bound on its own chord deviation; this adds the (linear) difference between piece chords
-/// and the interval chord, measured at the breakpoints: per breakpoint, how far the path is
-/// there from the interval's chord (`distance` of the difference: a norm).
-template <class Value, class Distance>
-std::vector<double> chord_gaps(const std::vector<double>& bps, const std::vector<Value>& path, Distance distance) {
-  const double t0 = bps.front(), t1 = bps.back();
-  std::vector<double> gaps;
-  gaps.reserve(bps.size());
-  gaps.push_back(0.0);  // the chord passes through the path's ends
-  for (std::size_t k = 1; k + 1 < bps.size(); ++k) {
-    const double w = lerp_weight(bps[k], t0, t1);
-    gaps.push_back(distance(Value(path[k] - ((1 - w) * path.front() + w * path.back()))));
+/// Shared bookkeeping: the part's center follows xc(t), its frame turns by R(t). [t0, t1] is
+/// cut into pieces at the key times strictly inside it, and `eval` gives the path's value at
+/// each breakpoint, once per breakpoint, without allocating. Each piece [a, b] bounds its own
+/// chord deviation; the caller adds the (linear) difference between the piece chords and the
+/// interval chord, measured at the breakpoints: per breakpoint, its `gap` from the interval's
+/// chord, gap(value, value at t0, value at t1, w) with w the breakpoint's weight between t0
+/// and t1 (a norm of value − ((1 − w) front + w back)); zero at t0 and t1, which the chord
+/// passes through. Calls piece(a, b, value at a, gap at a, gap at b) in increasing time.
+template <class Eval, class Gap, class Piece>
+void for_each_piece(const std::vector<double>& key_times, double t0, double t1, Eval eval, Gap gap, Piece piece) {
+  using Value = decltype(eval(t0));
+  using Gaps = decltype(gap(std::declval<const Value&>(), std::declval<const Value&>(), std::declval<const Value&>(), 0.0));
+  const Value front = eval(t0), back = eval(t1);
+  const auto last = std::lower_bound(key_times.begin(), key_times.end(), t1);
+  double a = t0;
+  Value at_a = front;
+  Gaps gap_a{};
+  for (auto key = std::upper_bound(key_times.begin(), key_times.end(), t0);; ++key) {
+    if (key >= last) {
+      piece(a, t1, at_a, gap_a, Gaps{});
+      return;
+    }
+    const double b = *key;
+    Value at_b = eval(b);
+    const Gaps gap_b = gap(at_b, front, back, lerp_weight(b, t0, t1));
+    piece(a, b, at_a, gap_a, gap_b);
+    a = b;
+    at_a = std::move(at_b);
+    gap_a = gap_b;
   }
-  if (bps.size() > 1) gaps.push_back(0.0);
-  return gaps;
 }
 
-double center_distance(const Eigen::Vector3d& v) { return v.norm(); }
+/// |value − chord| for a center path, and ‖value − chord‖₂ for a frame path.
+double center_gap(const Eigen::Vector3d& at, const Eigen::Vector3d& front, const Eigen::Vector3d& back, double w) {
+  return Eigen::Vector3d(at - ((1 - w) * front + w * back)).norm();
+}
+double frame_gap(const Eigen::Matrix3d& at, const Eigen::Matrix3d& front, const Eigen::Matrix3d& back, double w) {
+  return operator_norm(Eigen::Matrix3d(at - ((1 - w) * front + w * back)));
+}
+
 
 }  // namespace
 
@@ -120,48 +132,45 @@ MotionBound keyframed_motion_bound(const BezierTranslationTrack& translation,
 
   // Translation.
   const std::vector<double>& xt = translation.key_times();
-  const std::vector<double> xb = breakpoints(xt, t0, t1);
-  std::vector<Eigen::Vector3d> x;
-  for (double t : xb) x.push_back(translation.evaluate(t));
-  const std::vector<double> x_gaps = chord_gaps(xb, x, center_distance);
-  const Eigen::Vector3d& x_start = x.front();
+  Eigen::Vector3d x_start;  // x(t0): the value at the first piece's start
   double x_dev = 0.0, x_disp = 0.0;
-  for (std::size_t i = 0; i + 1 < xb.size(); ++i) {
-    const PieceSegment ps = piece_segment(xt, xb[i], xb[i + 1]);
-    double own = 0.0;
-    if (ps.moving) {
-      const auto P = translation.control_points(ps.j);
-      const std::array<Eigen::Vector3d, 4> Q = {
-          blossom(P, ps.fa, ps.fa, ps.fa), blossom(P, ps.fa, ps.fa, ps.fb),
-          blossom(P, ps.fa, ps.fb, ps.fb), blossom(P, ps.fb, ps.fb, ps.fb)};
-      const double a = (Q[1] - (2.0 * Q[0] + Q[3]) / 3.0).norm();
-      const double b = (Q[2] - (Q[0] + 2.0 * Q[3]) / 3.0).norm();
-      own = cubic_hump_max(a, b);
-      for (const Eigen::Vector3d& q : Q) x_disp = std::max(x_disp, (q - x_start).norm());
-    } else {
-      x_disp = std::max(x_disp, (x[i] - x_start).norm());
-    }
-    x_dev = std::max(x_dev, own + std::max(x_gaps[i], x_gaps[i + 1]));
-  }
+  for_each_piece(
+      xt, t0, t1, [&](double t) { return translation.evaluate(t); }, center_gap,
+      [&](double a, double b, const Eigen::Vector3d& x_a, double gap_a, double gap_b) {
+        if (a == t0) x_start = x_a;
+        const PieceSegment ps = piece_segment(xt, a, b);
+        double own = 0.0;
+        if (ps.moving) {
+          const auto P = translation.control_points(ps.j);
+          const std::array<Eigen::Vector3d, 4> Q = {
+              blossom(P, ps.fa, ps.fa, ps.fa), blossom(P, ps.fa, ps.fa, ps.fb),
+              blossom(P, ps.fa, ps.fb, ps.fb), blossom(P, ps.fb, ps.fb, ps.fb)};
+          const double qa = (Q[1] - (2.0 * Q[0] + Q[3]) / 3.0).norm();
+          const double qb = (Q[2] - (Q[0] + 2.0 * Q[3]) / 3.0).norm();
+          own = cubic_hump_max(qa, qb);
+          for (const Eigen::Vector3d& q : Q) x_disp = std::max(x_disp, (q - x_start).norm());
+        } else {
+          x_disp = std::max(x_disp, (x_a - x_start).norm());
+        }
+        x_dev = std::max(x_dev, own + std::max(gap_a, gap_b));
+      });
 
   // Rotation.
   double r_dev = 0.0, turned = 0.0;
   if (radius > 0.0) {
     const std::vector<double>& rt = rotation.key_times();
-    const std::vector<double> rb = breakpoints(rt, t0, t1);
-    std::vector<Eigen::Matrix3d> frames;
-    for (double t : rb) frames.push_back(rotation.evaluate(t).toRotationMatrix());
-    const std::vector<double> r_gaps = chord_gaps(rb, frames, operator_norm);
-    for (std::size_t i = 0; i + 1 < rb.size(); ++i) {
-      const PieceSegment ps = piece_segment(rt, rb[i], rb[i + 1]);
-      double own = 0.0;
-      if (ps.moving) {
-        const double psi = rotation.segment_rotation_vector(ps.j).norm() * (ps.fb - ps.fa);
-        own = detail::arc_chord_deviation(psi);
-        turned += psi;
-      }
-      r_dev = std::max(r_dev, own + std::max(r_gaps[i], r_gaps[i + 1]));
-    }
+    for_each_piece(
+        rt, t0, t1, [&](double t) { return Eigen::Matrix3d(rotation.evaluate(t).toRotationMatrix()); }, frame_gap,
+        [&](double a, double b, const Eigen::Matrix3d&, double gap_a, double gap_b) {
+          const PieceSegment ps = piece_segment(rt, a, b);
+          double own = 0.0;
+          if (ps.moving) {
+            const double psi = rotation.segment_rotation_vector(ps.j).norm() * (ps.fb - ps.fa);
+            own = detail::arc_chord_deviation(psi);
+            turned += psi;
+          }
+          r_dev = std::max(r_dev, own + std::max(gap_a, gap_b));
+        });
   }
   out.deviation = x_dev + radius * r_dev;
   out.displacement = x_disp + radius * 2.0 * std::sin(0.5 * std::min(turned, M_PI));
@@ -174,46 +183,50 @@ MotionBound screw_motion_bound(const ScrewTrack& track, double radius, double t0
   if (!(t1 > t0)) return out;
   const Eigen::Vector3d& c = track.center();
   const std::vector<double>& st = track.key_times();
-  const std::vector<double> sb = breakpoints(st, t0, t1);
-  std::vector<Eigen::Vector3d> centers;
-  std::vector<Eigen::Matrix3d> frames;
-  for (double t : sb) {
+  struct Place {
+    Eigen::Vector3d center;
+    Eigen::Matrix3d frame;
+  };
+  const auto place = [&](double t) {
     const Eigen::Isometry3d pose = track.at(t);
-    centers.push_back(pose * c);
-    frames.push_back(pose.linear());
-  }
-  const std::vector<double> x_gaps = chord_gaps(sb, centers, center_distance);
-  const std::vector<double> r_gaps = radius > 0.0 ? chord_gaps(sb, frames, operator_norm) : std::vector<double>();
-  const Eigen::Vector3d& x_start = centers.front();
+    return Place{pose * c, pose.linear()};
+  };
+  const auto gaps = [&](const Place& at, const Place& front, const Place& back, double w) {
+    return std::array<double, 2>{center_gap(at.center, front.center, back.center, w),
+                                 radius > 0.0 ? frame_gap(at.frame, front.frame, back.frame, w) : 0.0};
+  };
+  Eigen::Vector3d x_start;  // the center at t0: that of the first piece's start
 
   double x_dev = 0.0, r_dev = 0.0, x_disp = 0.0, turned = 0.0;
-  for (std::size_t i = 0; i + 1 < sb.size(); ++i) {
-    const PieceSegment ps = piece_segment(st, sb[i], sb[i + 1]);
+  for_each_piece(st, t0, t1, place, gaps, [&](double a, double b, const Place& at_a, const std::array<double, 2>& gap_a,
+                                               const std::array<double, 2>& gap_b) {
+    if (a == t0) x_start = at_a.center;
+    const PieceSegment ps = piece_segment(st, a, b);
     double own_x = 0.0, own_r = 0.0, arc = 0.0;
     if (ps.moving) {
       const ScrewMotion& m = track.segment(ps.j);
-      const double b = m.angle(), df = ps.fb - ps.fa, psi = b * df;
+      const double angle = m.angle(), df = ps.fb - ps.fa, psi = angle * df;
       const Eigen::Vector3d& s = m.axis();
       Eigen::Vector3d chord = m.end() * c - m.start() * c;
       const double along = chord.dot(s);
       chord -= along * s;
       const double ell = chord.norm();  // = 2 ρ sin(b/2)
       // b / sin(b/2) → 2 as b → 0.
-      const double b_over_sin = b == 0.0 ? 2.0 : b / std::sin(0.5 * b);
+      const double b_over_sin = angle == 0.0 ? 2.0 : angle / std::sin(0.5 * angle);
       const double rho_b = 0.5 * ell * b_over_sin;  // ρ b, the angular part of the speed
       if (psi * psi / 8.0 < 2.0) {
-        own_x = rho_b * b * df * df / 8.0;  // ρ ψ² / 8
+        own_x = rho_b * angle * df * df / 8.0;  // ρ ψ² / 8
       } else {
-        own_x = ell / std::sin(0.5 * b);  // 2ρ (here b > 4)
+        own_x = ell / std::sin(0.5 * angle);  // 2ρ (here b > 4)
       }
       own_r = detail::arc_chord_deviation(psi);
       arc = std::hypot(m.distance(), rho_b) * df;
       turned += psi;
     }
-    x_dev = std::max(x_dev, own_x + std::max(x_gaps[i], x_gaps[i + 1]));
-    if (radius > 0.0) r_dev = std::max(r_dev, own_r + std::max(r_gaps[i], r_gaps[i + 1]));
-    x_disp = std::max(x_disp, (centers[i] - x_start).norm() + arc);
-  }
+    x_dev = std::max(x_dev, own_x + std::max(gap_a[0], gap_b[0]));
+    if (radius > 0.0) r_dev = std::max(r_dev, own_r + std::max(gap_a[1], gap_b[1]));
+    x_disp = std::max(x_disp, (at_a.center - x_start).norm() + arc);
+  });
   out.deviation = x_dev + radius * r_dev;
   out.displacement = x_disp + radius * 2.0 * std::sin(0.5 * std::min(turned, M_PI));
   return out;
