@@ -71,6 +71,9 @@ BodyTree::BodyTree(const geometry::Mesh& mesh) {
   nodes_.resize(1);
   builder.build(kRoot, 0, mesh.face_count(), 0);
   depth_ = builder.depth;
+  leaf_of_.resize(mesh.face_count());
+  for (std::size_t i = 0; i < nodes_.size(); ++i)
+    if (nodes_[i].leaf()) leaf_of_[nodes_[i].triangle] = static_cast<int>(i);
 
   // Connected components by union-find over the faces' vertices.
   std::vector<int> parent(mesh.vertex_count());

@@ -66,7 +66,7 @@ bool SpacetimeDetector::detect(const scene::Reconfigurable& scene, const BodyTre
   std::vector<PairRange> work;
   for (int a = 0; a < n; ++a)
     for (int b = a + 1; b < n; ++b) work.push_back({a, b, 0.0, 1.0});
-  if (!traverse(scene, trees, work, callbacks)) return false;
+  if (!traverse(scene, trees, work, {}, callbacks)) return false;
   valid_ = true;
   return true;
 }
@@ -102,25 +102,29 @@ bool SpacetimeDetector::update(const scene::Reconfigurable& scene, const BodyTre
     for (const auto& [t0, t1] : detail::union_of(ranges)) work.push_back({pair.first, pair.second, t0, t1});
   }
   // Drop what the re-traversal will find again: contacts found in a re-traversed step (what a
-  // step found stands on its own: its pruning relied on nothing else).
-  std::erase_if(contacts_, [&](const TriangleContact& c) {
-    return std::any_of(work.begin(), work.end(), [&](const PairRange& w) {
+  // step found stands on its own: its pruning relied on nothing else). The re-traversal starts
+  // from those that made their groups' extents.
+  const auto retraversed = std::stable_partition(contacts_.begin(), contacts_.end(), [&](const TriangleContact& c) {
+    return std::none_of(work.begin(), work.end(), [&](const PairRange& w) {
       return w.a == c.part_a && w.b == c.part_b && c.step_t0 >= w.t0 && c.step_t1 <= w.t1;
     });
   });
+  const std::vector<TriangleContact> previous(retraversed, contacts_.end());
+  contacts_.erase(retraversed, contacts_.end());
   std::erase_if(containments_, [&](const Containment& c) {
     return pairs.count({std::min(c.inner, c.outer), std::max(c.inner, c.outer)}) > 0;
   });
-  return traverse(scene, trees, work, callbacks);
+  return traverse(scene, trees, work, previous, callbacks);
 }
 
-bool SpacetimeDetector::traverse(const scene::Reconfigurable& scene, const BodyTrees& trees,
-                                 const std::vector<PairRange>& work, const DetectCallbacks& callbacks) {
+bool SpacetimeDetector::traverse(const scene::Reconfigurable& scene, const BodyTrees& trees, const std::vector<PairRange>& work,
+                                 const std::vector<TriangleContact>& previous, const DetectCallbacks& callbacks) {
   std::vector<detail::TraversalRange> ranges;
   for (const PairRange& w : work) ranges.push_back({w.a, w.b, w.t0, w.t1});
   for (const PartProxy& proxy : proxies_) stats_.proxy_samples += static_cast<long>(proxy.times.size());
   std::vector<TriangleContact> contacts;
-  if (!detail::traverse_ranges(scene, trees, proxies_, options_, ranges, contacts, stats_, callbacks)) {
+  const std::vector<detail::ContactHint> hints = detail::extreme_contacts(previous, FrameGrid(options_.frame));
+  if (!detail::traverse_ranges(scene, trees, proxies_, options_, ranges, hints, contacts, stats_, callbacks)) {
     valid_ = false;
     return false;
   }

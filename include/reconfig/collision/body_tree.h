@@ -32,6 +32,8 @@ class BodyTree {
   static constexpr int kRoot = 0;
   /// Depth of the deepest leaf (root = 0).
   int depth() const { return depth_; }
+  /// The leaf node that holds a triangle (a row of the mesh's F).
+  int leaf_of(int triangle) const { return leaf_of_[triangle]; }
   /// One vertex of each connected component (faces joined by shared vertices): enough to tell
   /// whether the part lies inside another when their surfaces do not cross.
   const std::vector<int>& component_vertices() const { return component_vertices_; }
@@ -40,6 +42,7 @@ class BodyTree {
   std::vector<Node> nodes_;
   int depth_ = 0;
   std::vector<int> component_vertices_;
+  std::vector<int> leaf_of_;
 };
 
 }  // namespace reconfig::collision

@@ -102,7 +102,10 @@ class SpacetimeDetector {
   /// Brings the result up to date after edits: rebuilds the proxies of the parts the dirty set
   /// names for this transition, finds the time range where each proxy changed, drops the
   /// contacts found in those stretches and re-traverses only the pairs involving a changed
-  /// part over them. The result is the same as `detect` from scratch. Parts whose geometry
+  /// part over them, starting from the triangle pairs of the dropped contacts that made their
+  /// groups' extents (after a small edit they most likely make the new extents, which then
+  /// prune the rest early). The groups are the same as those of `detect` from scratch (the
+  /// contacts that stand for them may differ). Parts whose geometry
   /// changed (or a structural change) trigger a full `detect`.
   /// @return false if cancelled (call `detect` before trusting the result again)
   bool update(const scene::Reconfigurable& scene, const BodyTrees& trees, const scene::DirtySet& dirty,
@@ -126,8 +129,10 @@ class SpacetimeDetector {
     int a, b;       ///< parts, a < b
     double t0, t1;  ///< time range to traverse (proxy sample times, or 0 and 1)
   };
+  /// @param previous  the contacts an earlier result had in `work`: the search starts from the
+  ///                  triangle pairs that made their groups' extents
   bool traverse(const scene::Reconfigurable& scene, const BodyTrees& trees, const std::vector<PairRange>& work,
-                const DetectCallbacks& callbacks);
+                const std::vector<TriangleContact>& previous, const DetectCallbacks& callbacks);
 
   int transition_;
   DetectorOptions options_;

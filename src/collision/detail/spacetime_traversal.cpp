@@ -658,10 +658,33 @@ class FoundSteps {
   std::vector<std::vector<StepGroups>> groups_;
 };
 
+/// The leaf pairs of the hints, per pair timeline and step (the step holding the hint's time),
+/// sorted.
 template <DopFamily family>
-bool run_traversal(const Traversal<family>& tr, std::vector<TriangleContact>& contacts, DetectionStats& stats,
-                   const DetectCallbacks& callbacks) {
+std::map<std::pair<int, int>, std::vector<std::pair<int, int>>> hinted_leaves(const Traversal<family>& tr,
+                                                                              const std::vector<ContactHint>& hints) {
+  std::map<std::pair<int, int>, std::vector<std::pair<int, int>>> leaves;
+  if (tr.options.all_contacts) return leaves;  // nothing is pruned: no order is better than another
+  for (const ContactHint& hint : hints)
+    for (int i = 0; i < static_cast<int>(tr.lines.size()); ++i) {
+      const PairTimeline& line = tr.lines[i];
+      if (line.a != hint.part_a || line.b != hint.part_b || hint.t < line.times.front() || hint.t > line.times.back()) continue;
+      const int step = std::clamp(static_cast<int>(std::upper_bound(line.times.begin(), line.times.end(), hint.t) - line.times.begin()) - 1, 0,
+                                  static_cast<int>(line.times.size()) - 2);
+      leaves[{i, step}].push_back({tr.tree(i, 0).leaf_of(hint.triangle_a), tr.tree(i, 1).leaf_of(hint.triangle_b)});
+    }
+  for (auto& [step, pairs] : leaves) {
+    std::sort(pairs.begin(), pairs.end());
+    pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  }
+  return leaves;
+}
+
+template <DopFamily family>
+bool run_traversal(const Traversal<family>& tr, const std::vector<ContactHint>& hints, std::vector<TriangleContact>& contacts,
+                   DetectionStats& stats, const DetectCallbacks& callbacks) {
   FoundSteps<family> found(tr);
+  const auto hinted = hinted_leaves(tr, hints);
   tbb::enumerable_thread_specific<BoundCache<family>> bound_caches;
   const auto step_groups = [&](int line, int step) { return found.of(line, step); };
   std::vector<WorkItem> level;
@@ -747,8 +770,15 @@ bool run_traversal(const Traversal<family>& tr, std::vector<TriangleContact>& co
         // the items where nothing is known yet, deepest first (to find a first contact soon).
         BoundCache<family>& bounds = bound_caches.local();
         UrgencyQueue<WorkItem>& queue = queues.local();  // empty, its buckets' memory kept from earlier steps
-        for (std::size_t i = steps[g].second; i-- > steps[g].first;) queue.push(items[i], kUnknownUrgency);
         std::vector<WorkItem> children;
+        const WorkItem& first_item = items[steps[g].first];
+        if (const auto at = hinted.find({first_item.pair, first_item.s0}); at != hinted.end())
+          for (const auto& [leaf_a, leaf_b] : at->second) {  // the hints first (their leaf pairs split nothing)
+            const std::size_t known = local.size();
+            process(tr, {first_item.pair, leaf_a, leaf_b, first_item.s0, first_item.s1}, children, context, bounds);
+            for (std::size_t c = known; c < local.size(); ++c) found.add(local[c].line, local[c].contact);
+          }
+        for (std::size_t i = steps[g].second; i-- > steps[g].first;) queue.push(items[i], kUnknownUrgency);
         while (!queue.empty()) {
           const WorkItem item = queue.pop();
           const std::size_t known = local.size();
@@ -774,6 +804,13 @@ bool run_traversal(const Traversal<family>& tr, std::vector<TriangleContact>& co
     }
   }
   std::sort(contacts.begin(), contacts.end(), contact_less);
+  // A hinted leaf pair that the search reaches again reports the same contacts again.
+  contacts.erase(std::unique(contacts.begin(), contacts.end(),
+                             [](const TriangleContact& x, const TriangleContact& y) {
+                               return !contact_less(x, y) && !contact_less(y, x) && x.possible == y.possible &&
+                                      x.step_t0 == y.step_t0 && x.box.min() == y.box.min() && x.box.max() == y.box.max();
+                             }),
+                 contacts.end());
   return true;
 }
 
@@ -781,7 +818,8 @@ bool run_traversal(const Traversal<family>& tr, std::vector<TriangleContact>& co
 
 bool traverse_ranges(const scene::Reconfigurable& scene, const BodyTrees& trees, const std::vector<PartProxy>& proxies,
                      const DetectorOptions& options, const std::vector<TraversalRange>& ranges,
-                     std::vector<TriangleContact>& contacts, DetectionStats& stats, const DetectCallbacks& callbacks) {
+                     const std::vector<ContactHint>& hints, std::vector<TriangleContact>& contacts, DetectionStats& stats,
+                     const DetectCallbacks& callbacks) {
   const double pad = rounding_pad(scene, proxies);
   bool finished = false;
   const auto run = [&]<DopFamily family>() {
@@ -801,7 +839,7 @@ bool traverse_ranges(const scene::Reconfigurable& scene, const BodyTrees& trees,
       if (sweep(r.a, r.t0, r.t1).overlaps(sweep(r.b, r.t0, r.t1))) lines.push_back(make_timeline(proxies, r.a, r.b, r.t0, r.t1));
     }
     const Traversal<family> traversal(scene, trees, proxies, options, std::move(lines), pad);
-    finished = run_traversal(traversal, contacts, stats, callbacks);
+    finished = run_traversal(traversal, hints, contacts, stats, callbacks);
   };
   switch (options.dop) {
     case DopFamily::k8: run.template operator()<DopFamily::k8>(); break;
@@ -828,6 +866,31 @@ std::vector<CollisionInterval> group_contacts(const std::vector<TriangleContact>
     return std::tie(x.t0, x.parts, x.t1) < std::tie(y.t0, y.parts, y.t1);
   });
   return groups;
+}
+
+std::vector<ContactHint> extreme_contacts(const std::vector<TriangleContact>& contacts, const FrameGrid& grid) {
+  // Per pair of parts and frame: the contact with the lowest box minimum and the highest box
+  // maximum along each axis, the earliest start and the latest end.
+  constexpr int kExtremes = 8;
+  std::map<std::tuple<int, int, int>, std::array<const TriangleContact*, kExtremes>> extremes;
+  for (const TriangleContact& c : contacts) {
+    if (c.possible) continue;
+    auto& best = extremes.try_emplace({c.part_a, c.part_b, frame_of_contact(grid, c)}).first->second;
+    const auto keep = [&](int k, auto further) {
+      if (!best[k] || further(*best[k])) best[k] = &c;
+    };
+    for (int axis = 0; axis < 3; ++axis) {
+      keep(axis, [&](const TriangleContact& b) { return c.box.min()[axis] < b.box.min()[axis]; });
+      keep(3 + axis, [&](const TriangleContact& b) { return c.box.max()[axis] > b.box.max()[axis]; });
+    }
+    keep(6, [&](const TriangleContact& b) { return c.t0 < b.t0; });
+    keep(7, [&](const TriangleContact& b) { return c.t1 > b.t1; });
+  }
+  std::vector<ContactHint> hints;
+  for (const auto& [key, best] : extremes)
+    for (const TriangleContact* c : best)
+      hints.push_back({c->part_a, c->triangle_a, c->part_b, c->triangle_b, (c->t0 + c->t1) / 2});
+  return hints;
 }
 
 Eigen::MatrixX3d proxy_points(const PartProxy& proxy, const Eigen::MatrixX3d& rest, double t) {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "reconfig/collision/collision_interval.h"
+#include "reconfig/collision/frame_grid.h"
 #include "reconfig/collision/spacetime_detector.h"
 
 namespace reconfig::collision::detail {
@@ -19,11 +20,28 @@ struct TraversalRange {
   double t0 = 0, t1 = 1;
 };
 
+/// A pair of triangles (of parts a < b) that was in contact at time t in an earlier result.
+struct ContactHint {
+  int part_a = 0, triangle_a = 0;
+  int part_b = 0, triangle_b = 0;
+  double t = 0;
+};
+
 /// Finds the contacts of every range, sorted by `contact_less`, adding to `stats`.
+/// `hints` warm-start the search: in the proxy step that holds a hint's time, the narrow phase
+/// runs on its triangle pair before anything else, so that the groups it finds there prune
+/// early (a contact a hint finds is a contact like any other; the groups found do not depend on
+/// the hints, only how soon they are reached and which contacts stand for them).
 /// @return false if cancelled through `callbacks.progress`
 bool traverse_ranges(const scene::Reconfigurable& scene, const BodyTrees& trees, const std::vector<PartProxy>& proxies,
                      const DetectorOptions& options, const std::vector<TraversalRange>& ranges,
-                     std::vector<TriangleContact>& contacts, DetectionStats& stats, const DetectCallbacks& callbacks);
+                     const std::vector<ContactHint>& hints, std::vector<TriangleContact>& contacts, DetectionStats& stats,
+                     const DetectCallbacks& callbacks);
+
+/// Hints for a search that must find `contacts` again (or their successors after an edit):
+/// per pair of parts and frame, the contacts whose boxes reach furthest along each axis, either
+/// way, and those that start first and end last: those the groups' extents come from.
+std::vector<ContactHint> extreme_contacts(const std::vector<TriangleContact>& contacts, const FrameGrid& grid);
 
 /// The groups of every pair of parts and frame: the contacts that meet (in time, and in space
 /// within the options' `group_gap`) merged to the fixpoint, sorted by (t0, parts, t1).
