@@ -658,12 +658,21 @@ class FoundSteps {
   std::vector<std::vector<StepGroups>> groups_;
 };
 
-/// The leaf pairs of the hints, per pair timeline and step (the step holding the hint's time),
-/// sorted.
+/// Leaf pairs whose narrow phase runs first, per pair timeline and step.
+using StepLeaves = std::map<std::pair<int, int>, std::vector<std::pair<int, int>>>;
+
+/// Sorts each step's leaf pairs and drops repeats (the order they run in is then fixed).
+void tidy(StepLeaves& leaves) {
+  for (auto& [step, pairs] : leaves) {
+    std::sort(pairs.begin(), pairs.end());
+    pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  }
+}
+
+/// The leaf pairs of the hints, in the step that holds each hint's time.
 template <DopFamily family>
-std::map<std::pair<int, int>, std::vector<std::pair<int, int>>> hinted_leaves(const Traversal<family>& tr,
-                                                                              const std::vector<ContactHint>& hints) {
-  std::map<std::pair<int, int>, std::vector<std::pair<int, int>>> leaves;
+StepLeaves hinted_leaves(const Traversal<family>& tr, const std::vector<ContactHint>& hints) {
+  StepLeaves leaves;
   if (tr.options.all_contacts) return leaves;  // nothing is pruned: no order is better than another
   for (const ContactHint& hint : hints)
     for (int i = 0; i < static_cast<int>(tr.lines.size()); ++i) {
@@ -673,18 +682,39 @@ std::map<std::pair<int, int>, std::vector<std::pair<int, int>>> hinted_leaves(co
                                   static_cast<int>(line.times.size()) - 2);
       leaves[{i, step}].push_back({tr.tree(i, 0).leaf_of(hint.triangle_a), tr.tree(i, 1).leaf_of(hint.triangle_b)});
     }
-  for (auto& [step, pairs] : leaves) {
-    std::sort(pairs.begin(), pairs.end());
-    pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
-  }
+  tidy(leaves);
   return leaves;
+}
+
+/// Adds, to each step next to one that found contacts, the leaf pairs of the contacts that
+/// made the extents of that step's groups in the frames the two steps share: contacts persist
+/// from step to step (a drawer sliding past a door meets the same faces), so those pairs most
+/// likely make the extents of the neighbor's groups there too.
+/// @param found  the contacts found, per pair timeline and step
+template <DopFamily family>
+void add_neighbor_hints(const Traversal<family>& tr, const std::map<std::pair<int, int>, std::vector<TriangleContact>>& found,
+                        StepLeaves& leaves) {
+  if (tr.options.all_contacts) return;
+  for (const auto& [at, contacts] : found) {
+    const auto [line, step] = at;
+    for (const int next : {step - 1, step + 1}) {
+      if (next < 0 || next + 2 > static_cast<int>(tr.lines[line].times.size())) continue;
+      const auto [first, last] = tr.step_frames[line][next];
+      std::vector<TriangleContact> shared;  // in the frames both steps overlap
+      for (const TriangleContact& c : contacts)
+        if (const int frame = frame_of_contact(tr.grid, c); frame >= first && frame <= last) shared.push_back(c);
+      for (const ContactHint& hint : extreme_contacts(shared, tr.grid))
+        leaves[{line, next}].push_back({tr.tree(line, 0).leaf_of(hint.triangle_a), tr.tree(line, 1).leaf_of(hint.triangle_b)});
+    }
+  }
+  tidy(leaves);
 }
 
 template <DopFamily family>
 bool run_traversal(const Traversal<family>& tr, const std::vector<ContactHint>& hints, std::vector<TriangleContact>& contacts,
                    DetectionStats& stats, const DetectCallbacks& callbacks) {
   FoundSteps<family> found(tr);
-  const auto hinted = hinted_leaves(tr, hints);
+  StepLeaves hinted = hinted_leaves(tr, hints);
   tbb::enumerable_thread_specific<BoundCache<family>> bound_caches;
   const auto step_groups = [&](int line, int step) { return found.of(line, step); };
   std::vector<WorkItem> level;
@@ -756,9 +786,19 @@ bool run_traversal(const Traversal<family>& tr, const std::vector<ContactHint>& 
     for (std::size_t i = 0; i < items.size(); ++i)
       if (i == 0 || items[i].pair != items[i - 1].pair || items[i].s0 != items[i - 1].s0) steps.push_back({i, i + 1});
       else steps.back().second = i + 1;
+    // Two rounds: the even steps of every pair timeline, then the odd ones, which start from
+    // the triangle pairs that made their neighbors' extents (`add_neighbor_hints`).
+    std::vector<std::pair<std::size_t, std::size_t>> order;  // the runs of `steps`, even steps first
+    for (const int parity : {0, 1})
+      for (const auto& run : steps)
+        if (items[run.first].s0 % 2 == parity) order.push_back(run);
+    const auto first_odd = static_cast<std::size_t>(
+        std::count_if(steps.begin(), steps.end(), [&](const auto& run) { return items[run.first].s0 % 2 == 0; }));
+    std::map<std::pair<int, int>, std::vector<TriangleContact>> found_by_step;  // in the first round
     tbb::enumerable_thread_specific<UrgencyQueue<WorkItem>> queues;
-    for (std::size_t first = 0; first < steps.size(); first += kStepsPerBatch) {
-      const std::size_t end = std::min(steps.size(), first + kStepsPerBatch);
+    for (std::size_t first = 0; first < order.size();) {
+      if (first == first_odd) add_neighbor_hints(tr, found_by_step, hinted);
+      const std::size_t end = std::min(first < first_odd ? first_odd : order.size(), first + kStepsPerBatch);
       std::vector<std::vector<LineContact>> batch_contacts(end - first);
       std::vector<DetectionStats> batch_stats(end - first);
       tbb::parallel_for(first, end, [&](std::size_t g) {
@@ -767,18 +807,19 @@ bool run_traversal(const Traversal<family>& tr, const std::vector<ContactHint>& 
         // Best first: the item whose contacts could lie furthest outside the groups found so
         // far (children inherit their parent's protrusion, which bounds theirs), so that the
         // contacts that make the groups' extremes come early and prune the rest; first of all
-        // the items where nothing is known yet, deepest first (to find a first contact soon).
+        // the hinted leaf pairs, then the items where nothing is known yet, deepest first (to
+        // find a first contact soon).
         BoundCache<family>& bounds = bound_caches.local();
         UrgencyQueue<WorkItem>& queue = queues.local();  // empty, its buckets' memory kept from earlier steps
         std::vector<WorkItem> children;
-        const WorkItem& first_item = items[steps[g].first];
+        const WorkItem& first_item = items[order[g].first];
         if (const auto at = hinted.find({first_item.pair, first_item.s0}); at != hinted.end())
-          for (const auto& [leaf_a, leaf_b] : at->second) {  // the hints first (their leaf pairs split nothing)
+          for (const auto& [leaf_a, leaf_b] : at->second) {  // leaf pairs split nothing
             const std::size_t known = local.size();
             process(tr, {first_item.pair, leaf_a, leaf_b, first_item.s0, first_item.s1}, children, context, bounds);
             for (std::size_t c = known; c < local.size(); ++c) found.add(local[c].line, local[c].contact);
           }
-        for (std::size_t i = steps[g].second; i-- > steps[g].first;) queue.push(items[i], kUnknownUrgency);
+        for (std::size_t i = order[g].second; i-- > order[g].first;) queue.push(items[i], kUnknownUrgency);
         while (!queue.empty()) {
           const WorkItem item = queue.pop();
           const std::size_t known = local.size();
@@ -789,18 +830,23 @@ bool run_traversal(const Traversal<family>& tr, const std::vector<ContactHint>& 
         }
       });
       for (std::size_t g = first; g < end; ++g) {
-        for (const LineContact& c : batch_contacts[g - first]) contacts.push_back(c.contact);
+        const WorkItem& step = items[order[g].first];
+        for (const LineContact& c : batch_contacts[g - first]) {
+          contacts.push_back(c.contact);
+          if (g < first_odd) found_by_step[{step.pair, step.s0}].push_back(c.contact);
+        }
         add_stats(stats, batch_stats[g - first]);
       }
       if (callbacks.preview) {
         std::vector<std::pair<double, double>> ranges = contact_ranges();
-        for (std::size_t g = end; g < steps.size(); ++g) {
-          const WorkItem& item = items[steps[g].first];
+        for (std::size_t g = end; g < order.size(); ++g) {
+          const WorkItem& item = items[order[g].first];
           ranges.push_back({tr.lines[item.pair].times[item.s0], tr.lines[item.pair].times[item.s1]});
         }
         callbacks.preview({depth, union_of(std::move(ranges))});
       }
-      if (!report_progress(callbacks.progress, 0.5 + 0.5 * static_cast<double>(end) / steps.size())) return false;
+      if (!report_progress(callbacks.progress, 0.5 + 0.5 * static_cast<double>(end) / order.size())) return false;
+      first = end;
     }
   }
   std::sort(contacts.begin(), contacts.end(), contact_less);
