@@ -674,14 +674,19 @@ template <DopFamily family>
 StepLeaves hinted_leaves(const Traversal<family>& tr, const std::vector<ContactHint>& hints) {
   StepLeaves leaves;
   if (tr.options.all_contacts) return leaves;  // nothing is pruned: no order is better than another
-  for (const ContactHint& hint : hints)
-    for (int i = 0; i < static_cast<int>(tr.lines.size()); ++i) {
+  std::multimap<std::pair<int, int>, int> lines_of;  // the pair timelines of each pair of parts
+  for (int i = 0; i < static_cast<int>(tr.lines.size()); ++i) lines_of.emplace(std::pair{tr.lines[i].a, tr.lines[i].b}, i);
+  for (const ContactHint& hint : hints) {
+    const auto [begin, end] = lines_of.equal_range({hint.part_a, hint.part_b});
+    for (auto at = begin; at != end; ++at) {
+      const int i = at->second;
       const PairTimeline& line = tr.lines[i];
-      if (line.a != hint.part_a || line.b != hint.part_b || hint.t < line.times.front() || hint.t > line.times.back()) continue;
+      if (hint.t < line.times.front() || hint.t > line.times.back()) continue;
       const int step = std::clamp(static_cast<int>(std::upper_bound(line.times.begin(), line.times.end(), hint.t) - line.times.begin()) - 1, 0,
                                   static_cast<int>(line.times.size()) - 2);
       leaves[{i, step}].push_back({tr.tree(i, 0).leaf_of(hint.triangle_a), tr.tree(i, 1).leaf_of(hint.triangle_b)});
     }
+  }
   tidy(leaves);
   return leaves;
 }
