@@ -794,11 +794,11 @@ bool run_traversal(const Traversal<family>& tr, const std::vector<ContactHint>& 
     // Two rounds: the even steps of every pair timeline, then the odd ones, which start from
     // the triangle pairs that made their neighbors' extents (`add_neighbor_hints`).
     std::vector<std::pair<std::size_t, std::size_t>> order;  // the runs of `steps`, even steps first
-    for (const int parity : {0, 1})
-      for (const auto& run : steps)
-        if (items[run.first].s0 % 2 == parity) order.push_back(run);
-    const auto first_odd = static_cast<std::size_t>(
-        std::count_if(steps.begin(), steps.end(), [&](const auto& run) { return items[run.first].s0 % 2 == 0; }));
+    for (const auto& run : steps)
+      if (items[run.first].s0 % 2 == 0) order.push_back(run);
+    const std::size_t first_odd = order.size();
+    for (const auto& run : steps)
+      if (items[run.first].s0 % 2 == 1) order.push_back(run);
     std::map<std::pair<int, int>, std::vector<TriangleContact>> found_by_step;  // in the first round
     tbb::enumerable_thread_specific<UrgencyQueue<WorkItem>> queues;
     for (std::size_t first = 0; first < order.size();) {
@@ -817,19 +817,18 @@ bool run_traversal(const Traversal<family>& tr, const std::vector<ContactHint>& 
         BoundCache<family>& bounds = bound_caches.local();
         UrgencyQueue<WorkItem>& queue = queues.local();  // empty, its buckets' memory kept from earlier steps
         std::vector<WorkItem> children;
-        const WorkItem& first_item = items[order[g].first];
-        if (const auto at = hinted.find({first_item.pair, first_item.s0}); at != hinted.end())
-          for (const auto& [leaf_a, leaf_b] : at->second) {  // leaf pairs split nothing
-            const std::size_t known = local.size();
-            process(tr, {first_item.pair, leaf_a, leaf_b, first_item.s0, first_item.s1}, children, context, bounds);
-            for (std::size_t c = known; c < local.size(); ++c) found.add(local[c].line, local[c].contact);
-          }
-        for (std::size_t i = order[g].second; i-- > order[g].first;) queue.push(items[i], kUnknownUrgency);
-        while (!queue.empty()) {
-          const WorkItem item = queue.pop();
+        const auto run = [&](const WorkItem& item) {  // its contacts join the step's groups at once
           const std::size_t known = local.size();
           const double urgency = process(tr, item, children, context, bounds);
           for (std::size_t c = known; c < local.size(); ++c) found.add(local[c].line, local[c].contact);
+          return urgency;
+        };
+        const WorkItem& first_item = items[order[g].first];
+        if (const auto at = hinted.find({first_item.pair, first_item.s0}); at != hinted.end())
+          for (const auto& [leaf_a, leaf_b] : at->second) run({first_item.pair, leaf_a, leaf_b, first_item.s0, first_item.s1});
+        for (std::size_t i = order[g].second; i-- > order[g].first;) queue.push(items[i], kUnknownUrgency);
+        while (!queue.empty()) {
+          const double urgency = run(queue.pop());
           for (auto child = children.rbegin(); child != children.rend(); ++child) queue.push(*child, urgency);
           children.clear();
         }
