@@ -120,7 +120,6 @@ double frame_gap(const Eigen::Matrix3d& at, const Eigen::Matrix3d& front, const 
   return operator_norm(Eigen::Matrix3d(at - ((1 - w) * front + w * back)));
 }
 
-
 }  // namespace
 
 MotionBound keyframed_motion_bound(const BezierTranslationTrack& translation,

@@ -74,6 +74,13 @@ struct PairTimeline {
   std::vector<double> times;
   std::vector<Affine> maps[2];
   bool moving[2] = {false, false};  ///< some map differs from the first
+
+  /// The step [times[k], times[k + 1]] holding t (the first or last step outside the range),
+  /// as `PartProxy::step_of`.
+  int step_of(double t) const {
+    const int k = static_cast<int>(std::upper_bound(times.begin(), times.end(), t) - times.begin()) - 1;
+    return std::clamp(k, 0, static_cast<int>(times.size()) - 2);
+  }
 };
 
 PairTimeline make_timeline(const std::vector<PartProxy>& proxies, int a, int b, double t0, double t1) {
@@ -263,8 +270,7 @@ struct Traversal {
       }
     };
     const auto at = [&](double t) {
-      const int s = std::clamp(static_cast<int>(std::upper_bound(line.times.begin(), line.times.end(), t) - line.times.begin()) - 1,
-                               0, static_cast<int>(line.times.size()) - 2);
+      const int s = line.step_of(t);
       const double mu = std::clamp((t - line.times[s]) / (line.times[s + 1] - line.times[s]), 0.0, 1.0);
       return between(line.maps[side][s], line.maps[side][s + 1], mu);
     };
@@ -669,6 +675,12 @@ void tidy(StepLeaves& leaves) {
   }
 }
 
+/// The leaves of a hint's two triangles in the trees of pair timeline `line`.
+template <DopFamily family>
+std::pair<int, int> leaf_pair(const Traversal<family>& tr, int line, const ContactHint& hint) {
+  return {tr.tree(line, 0).leaf_of(hint.triangle_a), tr.tree(line, 1).leaf_of(hint.triangle_b)};
+}
+
 /// The leaf pairs of the hints, in the step that holds each hint's time.
 template <DopFamily family>
 StepLeaves hinted_leaves(const Traversal<family>& tr, const std::vector<ContactHint>& hints) {
@@ -682,9 +694,7 @@ StepLeaves hinted_leaves(const Traversal<family>& tr, const std::vector<ContactH
       const int i = at->second;
       const PairTimeline& line = tr.lines[i];
       if (hint.t < line.times.front() || hint.t > line.times.back()) continue;
-      const int step = std::clamp(static_cast<int>(std::upper_bound(line.times.begin(), line.times.end(), hint.t) - line.times.begin()) - 1, 0,
-                                  static_cast<int>(line.times.size()) - 2);
-      leaves[{i, step}].push_back({tr.tree(i, 0).leaf_of(hint.triangle_a), tr.tree(i, 1).leaf_of(hint.triangle_b)});
+      leaves[{i, line.step_of(hint.t)}].push_back(leaf_pair(tr, i, hint));
     }
   }
   tidy(leaves);
@@ -709,7 +719,7 @@ void add_neighbor_hints(const Traversal<family>& tr, const std::map<std::pair<in
       for (const TriangleContact& c : contacts)
         if (const int frame = frame_of_contact(tr.grid, c); frame >= first && frame <= last) shared.push_back(c);
       for (const ContactHint& hint : extreme_contacts(shared, tr.grid))
-        leaves[{line, next}].push_back({tr.tree(line, 0).leaf_of(hint.triangle_a), tr.tree(line, 1).leaf_of(hint.triangle_b)});
+        leaves[{line, next}].push_back(leaf_pair(tr, line, hint));
     }
   }
   tidy(leaves);
