@@ -9,6 +9,7 @@
 #include <array>
 #include <cstdint>
 #include <utility>
+#include <vector>
 
 #include "reconfig/collision/body_tree.h"
 #include "reconfig/collision/kdop.h"
@@ -52,6 +53,7 @@ struct SampleAxes {
 
   /// The axes at placement `m`, at time `time`; with `tighten`, also what `node_extents` needs.
   SampleAxes(const Affine& m, double time, bool tighten) : map(m), t(time) {
+    if (tighten) tightenings.reserve(4 * K);
     const auto& dirs = dop_axes<family>();
     for (int j = 0; j < K; ++j) {
       const Eigen::Vector3d w = m.L.transpose() * dirs[j].template head<3>();
@@ -67,7 +69,7 @@ struct SampleAxes {
         if (!(lambda > 0)) return;
         const int i = kDiagonalIndex[(d[0] + 1) + 3 * (d[1] + 1) + 9 * (d[2] + 1)];
         const int up = i >= 0 ? i : 10 - i - 1, down = i >= 0 ? 10 + i : -i - 1;
-        tightenings[tightening_count++] = {static_cast<std::uint8_t>(j), static_cast<std::uint8_t>(up), static_cast<std::uint8_t>(down), lambda};
+        tightenings.push_back({static_cast<std::uint8_t>(j), static_cast<std::uint8_t>(up), static_cast<std::uint8_t>(down), lambda});
       };
       add(0, 1, -1);
       add(0, 2, -1);
@@ -93,8 +95,7 @@ struct SampleAxes {
     std::uint8_t axis, up, down;  ///< up, down: indices into `BodyTree::DiagonalSlack`, along d and −d
     double lambda;
   };
-  std::array<Tightening, 4 * K> tightenings;  ///< the first `tightening_count`
-  int tightening_count = 0;
+  std::vector<Tightening> tightenings;  ///< none without `tighten`
 
   /// The extents [lo, hi] of a rest-frame box (center, half extents) along every axis.
   std::pair<Axes, Axes> box_extents(const Eigen::Vector3d& center, const Eigen::Vector3d& half) const {
@@ -108,8 +109,7 @@ struct SampleAxes {
   std::pair<Axes, Axes> node_extents(const BodyTree::Node& node, const BodyTree::DiagonalSlack& slack) const {
     const auto [box_lo, box_hi] = box_extents(node.center, node.half);
     Axes lo = box_lo, hi = box_hi;
-    for (int c = 0; c < tightening_count; ++c) {
-      const auto [j, up, down, lambda] = tightenings[c];
+    for (const auto& [j, up, down, lambda] : tightenings) {
       hi[j] = std::min(hi[j], box_hi[j] - lambda * slack[up]);
       lo[j] = std::max(lo[j], box_lo[j] + lambda * slack[down]);
     }
