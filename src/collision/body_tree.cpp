@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <utility>
 
 namespace reconfig::collision {
 namespace {
@@ -78,36 +79,41 @@ BodyTree::BodyTree(const geometry::Mesh& mesh) {
   for (std::size_t i = 0; i < nodes_.size(); ++i)
     if (nodes_[i].leaf()) leaf_of_[nodes_[i].triangle] = static_cast<int>(i);
 
-  // The triangles' extents along the diagonals, bottom up (children come after their parent),
-  // and how far the boxes reach beyond them.
+  // The slack bottom up (children come after their parent): a node's extent along a diagonal
+  // is that of its triangles at a leaf, else the hull of its children's, each read back from
+  // its box less its slack (never less than the true extent, as the slack is rounded down).
   constexpr auto kSigns = dop_axis_signs<DopFamily::k28>();
   constexpr int kDiagonals = 10;
-  std::vector<std::array<double, 2 * kDiagonals>> extents(nodes_.size());  // lo, then hi
   diagonal_slack_.resize(nodes_.size());
+  const auto box_along = [&](const Node& node, int j) {  // the box's middle and reach along diagonal j
+    const auto& d = kSigns[3 + j];
+    double middle = 0, reach = 0;
+    for (int k = 0; k < 3; ++k) middle += d[k] * node.center[k], reach += d[k] != 0 ? node.half[k] : 0.0;
+    return std::pair{middle, reach};
+  };
+  const auto rounded_down = [](double x) {
+    const float f = static_cast<float>(std::max(0.0, x));
+    return f > x ? std::nextafter(f, 0.0f) : f;
+  };
   for (std::size_t i = nodes_.size(); i-- > 0;) {
     const Node& node = nodes_[i];
-    auto& extent = extents[i];
     for (int j = 0; j < kDiagonals; ++j) {
-      const auto& d = kSigns[3 + j];
-      double& lo = extent[j];
-      double& hi = extent[kDiagonals + j];
+      double lo = std::numeric_limits<double>::infinity(), hi = -lo;
       if (node.leaf()) {
-        lo = std::numeric_limits<double>::infinity(), hi = -lo;
+        const auto& d = kSigns[3 + j];
         for (int c = 0; c < 3; ++c) {
           const Eigen::Vector3d v = mesh.V.row(mesh.F(node.triangle, c));
           const double value = d[0] * v.x() + d[1] * v.y() + d[2] * v.z();
           lo = std::min(lo, value), hi = std::max(hi, value);
         }
       } else {
-        lo = std::min(extents[node.left][j], extents[node.right][j]);
-        hi = std::max(extents[node.left][kDiagonals + j], extents[node.right][kDiagonals + j]);
+        for (const int child : {node.left, node.right}) {
+          const auto [middle, reach] = box_along(nodes_[child], j);
+          lo = std::min(lo, middle - reach + diagonal_slack_[child][kDiagonals + j]);
+          hi = std::max(hi, middle + reach - diagonal_slack_[child][j]);
+        }
       }
-      double middle = 0, reach = 0;  // of the box along d
-      for (int k = 0; k < 3; ++k) middle += d[k] * node.center[k], reach += d[k] != 0 ? node.half[k] : 0.0;
-      const auto rounded_down = [](double x) {
-        const float f = static_cast<float>(std::max(0.0, x));
-        return f > x ? std::nextafter(f, 0.0f) : f;
-      };
+      const auto [middle, reach] = box_along(node, j);
       diagonal_slack_[i][j] = rounded_down(middle + reach - hi);
       diagonal_slack_[i][kDiagonals + j] = rounded_down(lo - (middle - reach));
     }

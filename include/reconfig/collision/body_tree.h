@@ -41,6 +41,7 @@ class BodyTree {
   static constexpr int kRoot = 0;
   /// Depth of the deepest leaf (root = 0).
   int depth() const { return depth_; }
+  /// The number of triangles (leaves).
   int triangle_count() const { return static_cast<int>(leaf_of_.size()); }
   /// The leaf node that holds a triangle (a row of the mesh's F).
   int leaf_of(int triangle) const { return leaf_of_[triangle]; }

@@ -60,7 +60,7 @@ struct SampleAxes {
       reach.row(j) = w.cwiseAbs().transpose();
       if (!tighten) continue;
       // The diagonals d of w's signs over two or three of its coordinates, λ the smallest |w_k| there.
-      const Eigen::Vector3d size = w.cwiseAbs();
+      const auto size = reach.row(j);
       const auto add = [&](int k0, int k1, int k2) {  // k2 < 0 for two coordinates
         std::array<int, 3> d{};
         for (const int k : {k0, k1, k2})
