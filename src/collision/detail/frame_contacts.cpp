@@ -24,14 +24,24 @@ void FrameContacts::add(const TriangleContact& contact) {
   groups_.push_back(std::move(grown));
 }
 
-double FrameContacts::protrusion(double t0, double t1, const Eigen::AlignedBox3d& box, double time_unit,
-                                 double space_unit) const {
+namespace {
+
+/// `out` over `size`; the largest double when `size` is 0 and `out` is not.
+double relative(double out, double size) {
+  if (out == 0) return 0;
+  return size > 0 ? out / size : std::numeric_limits<double>::max();
+}
+
+}  // namespace
+
+double FrameContacts::protrusion(double t0, double t1, const Eigen::AlignedBox3d& box) const {
   double least = std::numeric_limits<double>::infinity();
+  const double duration = t1 - t0, side = box.sizes().maxCoeff();
   for (const CollisionInterval& g : groups_) {
     if (g.possible) continue;
-    const double out_time = std::max({g.t0 - t0, t1 - g.t1, 0.0}) / time_unit;
-    const double out_space = std::max({(g.box.min() - box.min()).maxCoeff(), (box.max() - g.box.max()).maxCoeff(), 0.0}) / space_unit;
-    least = std::min(least, std::max(out_time, out_space));
+    const double out_time = std::max({g.t0 - t0, t1 - g.t1, 0.0});
+    const double out_space = std::max({(g.box.min() - box.min()).maxCoeff(), (box.max() - g.box.max()).maxCoeff(), 0.0});
+    least = std::min(least, std::max(relative(out_time, duration), relative(out_space, side)));
   }
   return least;
 }

@@ -257,9 +257,6 @@ struct Traversal {
   }
 
   double gap(int pair) const { return group_gap(options, size[pair]); }
-  /// The distance that counts as much as a frame's time when ordering work by how far its
-  /// contacts could lie outside the groups (a fiftieth of the smaller part's size).
-  double urgency_unit(int pair) const { return size[pair] / 50; }
   /// The cell of the grid a pair's contact boxes are rounded out to.
   double cell(int pair) const { return options.box_resolution * size[pair]; }
 
@@ -372,15 +369,15 @@ double protrusion(const Traversal<family>& tr, const WorkItem& item, const ItemC
     const Eigen::AlignedBox3d box = box_between(t0, t1);
     if (box.isEmpty()) continue;
     if (tr.options.all_contacts || !groups) return kUnknown;
-    largest = std::max(largest, (*groups)[k - first].protrusion(t0, t1, box, tr.grid.width(), tr.urgency_unit(item.pair)));
+    largest = std::max(largest, (*groups)[k - first].protrusion(t0, t1, box));
     if (largest == kUnknown) return kUnknown;
   }
   return largest;
 }
 
 /// Processes one work item: prunes it, splits it into `next`, or runs the narrow phase.
-/// @return the item's `protrusion` when it was split (its children's contacts can lie no
-///         further outside the groups), else 0
+/// @return the item's `protrusion` when it was split (its children's urgency until they are
+///         looked at), else 0
 template <DopFamily family>
 double process(const Traversal<family>& tr, const WorkItem& item, std::vector<WorkItem>& next, const ItemContext& context,
                BoundCache<family>& bounds) {
@@ -801,9 +798,9 @@ bool run_traversal(const Traversal<family>& tr, const std::vector<ContactHint>& 
       tbb::parallel_for(first, end, [&](std::size_t g) {
         std::vector<LineContact>& local = batch_contacts[g - first];
         const ItemContext context{step_groups, local, batch_stats[g - first]};
-        // Best first: the item whose contacts could lie furthest outside the groups found so
-        // far (children inherit their parent's protrusion, which bounds theirs), so that the
-        // contacts that make the groups' extremes come early and prune the rest; first of all
+        // Best first: the item whose reach sticks out of the groups found so far the most for
+        // its size (children inherit their parent's protrusion), so that the contacts that
+        // make the groups' extremes come early and prune the rest; first of all
         // the hinted leaf pairs, then the items where nothing is known yet, deepest first (to
         // find a first contact soon).
         BoundCache<family>& bounds = bound_caches.local();
