@@ -73,6 +73,13 @@ bool boxes_apart(const Motion& m, double lo, double hi, double margin) {
   return false;
 }
 
+/// The buffers of one thread's calls.
+struct Scratch {
+  std::vector<Piece> queue;
+  std::vector<CoplanarityCubic> cubics;
+  std::vector<TimeInterval> found;
+};
+
 bool intersect_at(const Motion& m, double s) {
   return geometry::triangles_intersect(m.at(0, s), m.at(1, s), m.at(2, s), m.at(3, s), m.at(4, s), m.at(5, s));
 }
@@ -107,11 +114,16 @@ TrianglePairCcdResult triangle_pair_ccd(const TrianglePairCcdRequest& request) {
     result.pieces = 1;
     return result;
   }
-  // First in, first out (coarsest pieces first); `queue[next]` is the next piece.
-  std::vector<Piece> queue(1, Piece{0.0, 1.0, kAllTests, 0});
+  // First in, first out (coarsest pieces first); `queue[next]` is the next piece. The
+  // buffers are the thread's, kept from call to call (the detector makes thousands of calls).
+  thread_local Scratch scratch;
+  std::vector<Piece>& queue = scratch.queue;
+  std::vector<CoplanarityCubic>& cubics = scratch.cubics;
+  std::vector<TimeInterval>& found = scratch.found;  // in normalized time
+  queue.assign(1, Piece{0.0, 1.0, kAllTests, 0});
+  cubics.clear();
+  found.clear();
   std::size_t next = 0;
-  std::vector<CoplanarityCubic> cubics;
-  cubics.reserve(4 * kContactTests);
   std::array<MovingPoints, kContactTests> points;
   for (int index = 0; index < kContactTests; ++index) {
     const std::array<int, 4> vertices = test_vertices(index);
@@ -126,15 +138,15 @@ TrianglePairCcdResult triangle_pair_ccd(const TrianglePairCcdRequest& request) {
   options.max_boxes = request.max_boxes;
   options.earliest = false;  // only whether, not when: the bisection finds the times
 
-  std::vector<TimeInterval> found;  // in normalized time
   while (next < queue.size()) {
     const Piece piece = queue[next++];
     ++result.pieces;
     if (boxes_apart(motion, piece.lo, piece.hi, box_margin)) continue;  // apart throughout
 
-    const auto cubic_of = [&](int index) -> const CoplanarityCubic& {
-      return cubics[piece.first_cubic + std::popcount(piece.tests & ((1u << index) - 1))];
-    };
+    std::array<std::size_t, kContactTests> slot{};  // where the cubic of each test of the piece is
+    for (std::size_t index = 0, at = piece.first_cubic; index < kContactTests; ++index)
+      if (piece.tests & (1u << index)) slot[index] = at++;
+    const auto cubic_of = [&](int index) -> const CoplanarityCubic& { return cubics[slot[index]]; };
     unsigned coplanar = 0, at_an_end = 0;
     for (int index = 0; index < kContactTests; ++index) {
       if (!(piece.tests & (1u << index))) continue;
@@ -142,6 +154,7 @@ TrianglePairCcdResult triangle_pair_ccd(const TrianglePairCcdRequest& request) {
       if (c != Coplanarity::kNever) coplanar |= 1u << index;
       if (c == Coplanarity::kAtAnEnd) at_an_end |= 1u << index;
     }
+    if (coplanar != 0 && request.relevant && !request.relevant(piece.lo, piece.hi)) continue;
     const double mid = 0.5 * (piece.lo + piece.hi);
     const bool can_split = piece.lo < mid && mid < piece.hi;
     const bool final_size = piece.hi - piece.lo <= request.time_tolerance || !can_split;
@@ -212,7 +225,7 @@ TrianglePairCcdResult triangle_pair_ccd(const TrianglePairCcdRequest& request) {
       if (piece.lo == 0) t.lo = request.t0;
       if (piece.hi == 1) t.hi = request.t1;
     }
-    if (!result.intervals.empty() && t.lo <= result.intervals.back().hi)
+    if (request.merge_pieces && !result.intervals.empty() && t.lo <= result.intervals.back().hi)
       result.intervals.back().hi = std::max(result.intervals.back().hi, t.hi);
     else
       result.intervals.push_back(t);

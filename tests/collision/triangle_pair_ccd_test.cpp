@@ -291,35 +291,42 @@ TEST(TrianglePairCcdOracle, RandomContinuousPairsMatchDenseSampling) {
   EXPECT_GT(partial, 20);
 }
 
+/// Small triangles passing through each other or sliding by, as in deep interpenetrations: a
+/// third of them (by `trial`) moving nearly together, intersecting (or not) all along.
+RandomPair passing_pair(std::mt19937& rng, int trial) {
+  std::uniform_real_distribution<double> coord(-1, 1);
+  RandomPair p;
+  const Vector3d a_motion = 0.2 * Vector3d(coord(rng), coord(rng), coord(rng));
+  // A third of the pairs move nearly together: intersecting (or not) all along.
+  const bool together = trial % 3 == 0;
+  const Vector3d b_motion = together ? Vector3d(a_motion + 0.002 * Vector3d(coord(rng), coord(rng), coord(rng)))
+                                     : Vector3d(0.2 * Vector3d(coord(rng), coord(rng), coord(rng)));
+  const Vector3d a_center = 0.05 * Vector3d(coord(rng), coord(rng), coord(rng)) - a_motion / 2;
+  const Vector3d b_center = together ? Vector3d(a_center + 0.01 * Vector3d(coord(rng), coord(rng), coord(rng)))
+                                     : Vector3d(0.05 * Vector3d(coord(rng), coord(rng), coord(rng)) - b_motion / 2);
+  // A little rotation: the vertices do not all move alike.
+  const double turn = together ? 0.0 : 0.05 * coord(rng);
+  for (int k = 0; k < 3; ++k) {
+    const Vector3d da = 0.03 * Vector3d(coord(rng), coord(rng), coord(rng));
+    const Vector3d db = 0.03 * Vector3d(coord(rng), coord(rng), coord(rng));
+    p.a0[k] = a_center + da;
+    p.a1[k] = a_center + a_motion + da + turn * Vector3d(-da.y(), da.x(), 0);
+    p.b0[k] = b_center + db;
+    p.b1[k] = b_center + b_motion + db;
+  }
+  return p;
+}
+
 /// The detector's settings (1/32 of the step, 1e-4): small triangles passing through each other
 /// or sliding by, as in deep interpenetrations. Every sampled intersection is reported; a piece
 /// decided by one static test really holds that status at every sample; a reported interval
 /// holds an intersection except within one final piece of its ends.
 TEST(TrianglePairCcdOracle, DetectorSettingsOnPassingTriangles) {
   std::mt19937 rng(1618);
-  std::uniform_real_distribution<double> coord(-1, 1);
   constexpr double kPiece = 1.0 / 32;
   int whole = 0, partial = 0;
   for (int trial = 0; trial < 600; ++trial) {
-    RandomPair p;
-    const Vector3d a_motion = 0.2 * Vector3d(coord(rng), coord(rng), coord(rng));
-    // A third of the pairs move nearly together: intersecting (or not) all along.
-    const bool together = trial % 3 == 0;
-    const Vector3d b_motion = together ? Vector3d(a_motion + 0.002 * Vector3d(coord(rng), coord(rng), coord(rng)))
-                                       : Vector3d(0.2 * Vector3d(coord(rng), coord(rng), coord(rng)));
-    const Vector3d a_center = 0.05 * Vector3d(coord(rng), coord(rng), coord(rng)) - a_motion / 2;
-    const Vector3d b_center = together ? Vector3d(a_center + 0.01 * Vector3d(coord(rng), coord(rng), coord(rng)))
-                                       : Vector3d(0.05 * Vector3d(coord(rng), coord(rng), coord(rng)) - b_motion / 2);
-    // A little rotation: the vertices do not all move alike.
-    const double turn = together ? 0.0 : 0.05 * coord(rng);
-    for (int k = 0; k < 3; ++k) {
-      const Vector3d da = 0.03 * Vector3d(coord(rng), coord(rng), coord(rng));
-      const Vector3d db = 0.03 * Vector3d(coord(rng), coord(rng), coord(rng));
-      p.a0[k] = a_center + da;
-      p.a1[k] = a_center + a_motion + da + turn * Vector3d(-da.y(), da.x(), 0);
-      p.b0[k] = b_center + db;
-      p.b1[k] = b_center + b_motion + db;
-    }
+    const RandomPair p = passing_pair(rng, trial);
     TrianglePairCcdRequest req = request(p.a0, p.a1, p.b0, p.b1);
     req.time_tolerance = kPiece;
     req.distance_tolerance = 1e-4;
@@ -349,6 +356,64 @@ TEST(TrianglePairCcdOracle, DetectorSettingsOnPassingTriangles) {
   }
   EXPECT_GT(whole, 5) << partial;
   EXPECT_GT(partial, 40) << whole;
+}
+
+/// The detector's use: pieces it rejects are left out, with their halves, and every other
+/// piece is reported as without the rejection; unmerged, the pieces reported are those whose
+/// union the merged answer is.
+TEST(TrianglePairCcdOracle, RejectedPiecesAreLeftOutAndTheRestIsReportedAsWithout) {
+  std::mt19937 rng(4242);
+  std::uniform_int_distribution<int> sixty_fourth(0, 64);
+  const auto same = [](const TimeInterval& x, const TimeInterval& y) { return x.lo == y.lo && x.hi == y.hi; };
+  int dropped = 0, kept = 0;
+  for (int trial = 0; trial < 600; ++trial) {
+    const RandomPair p = passing_pair(rng, trial);
+    TrianglePairCcdRequest req = request(p.a0, p.a1, p.b0, p.b1);
+    req.time_tolerance = 1.0 / 32;
+    req.distance_tolerance = 1e-4;
+    const TrianglePairCcdResult merged = triangle_pair_ccd(req);
+    req.merge_pieces = false;
+    const TrianglePairCcdResult pieces = triangle_pair_ccd(req);
+    // Merging the touching pieces gives the merged answer.
+    std::vector<TimeInterval> united;
+    for (const TimeInterval& i : pieces.intervals) {
+      ASSERT_LE(i.lo, i.hi);
+      if (!united.empty()) {
+        ASSERT_LE(united.back().hi, i.lo) << "trial " << trial;
+      }
+      if (!united.empty() && i.lo <= united.back().hi) united.back().hi = std::max(united.back().hi, i.hi);
+      else united.push_back(i);
+    }
+    ASSERT_EQ(united.size(), merged.intervals.size()) << "trial " << trial;
+    for (std::size_t k = 0; k < united.size(); ++k) EXPECT_TRUE(same(united[k], merged.intervals[k])) << "trial " << trial;
+
+    // Reject every piece within a random window.
+    double w0 = sixty_fourth(rng) / 64.0, w1 = sixty_fourth(rng) / 64.0;
+    if (w0 > w1) std::swap(w0, w1);
+    int asked = 0;
+    req.relevant = [&](double lo, double hi) {
+      ++asked;
+      return !(w0 <= lo && hi <= w1);
+    };
+    const TrianglePairCcdResult part = triangle_pair_ccd(req);
+    EXPECT_LE(part.pieces, pieces.pieces);
+    if (pieces.pieces > 1) {
+      EXPECT_GT(asked, 0) << "trial " << trial;
+    }
+    for (const TimeInterval& i : part.intervals)
+      EXPECT_TRUE(std::any_of(pieces.intervals.begin(), pieces.intervals.end(), [&](const TimeInterval& j) { return same(i, j); }))
+          << "trial " << trial << ": [" << i.lo << ", " << i.hi << "] was not reported without the rejection";
+    for (const TimeInterval& j : pieces.intervals) {
+      const bool reported = std::any_of(part.intervals.begin(), part.intervals.end(), [&](const TimeInterval& i) { return same(i, j); });
+      if (!(w0 <= j.lo && j.hi <= w1)) {
+        EXPECT_TRUE(reported) << "trial " << trial << ": [" << j.lo << ", " << j.hi << "] lies outside the window";
+      }
+      dropped += !reported;
+      kept += reported;
+    }
+  }
+  EXPECT_GT(dropped, 50);  // the rejection mattered
+  EXPECT_GT(kept, 50);
 }
 
 }  // namespace

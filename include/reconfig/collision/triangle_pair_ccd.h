@@ -23,6 +23,7 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <functional>
 #include <vector>
 
 namespace reconfig::collision {
@@ -47,12 +48,24 @@ struct TrianglePairCcdRequest {
   int max_pieces = 4096;
   /// Work budget of each contact test (`PrimitiveCcdOptions::max_boxes`).
   int max_boxes = 100'000;
+  /// Optional: whether the caller cares about the times of a piece [lo, hi] of the step (in
+  /// step parameters, 0 at t0 and 1 at t1), asked of every piece where a contact may occur
+  /// before it is tested or halved. A piece it rejects is dropped, with its halves; every
+  /// other piece is treated as without it. (The detector rejects the pieces
+  /// where whatever the triangles could meet in lies inside a group it has found already.)
+  std::function<bool(double lo, double hi)> relevant;
+  /// Whether pieces reported whole that touch merge into one interval. Off, each is its own
+  /// interval, so that what is reported of a time does not depend on what is reported next to
+  /// it (the detector's boxes of where triangles meet over an interval would: that of a union
+  /// is larger than the union of those of its parts).
+  bool merge_pieces = true;
 };
 
 /// When the triangles intersect.
 struct TrianglePairCcdResult {
-  /// Sorted, disjoint closed intervals within [t0, t1] covering every time at which the closed
-  /// triangles share a point (no false negatives). Inflation: a reported time is either a
+  /// Sorted, disjoint closed intervals within [t0, t1] (without `merge_pieces`, touching ones
+  /// may share an end) covering every time at which the closed triangles share a point (no
+  /// false negatives), except times that lie only in pieces `relevant` rejected. Inflation: a reported time is either a
   /// true intersection time or lies in a piece of at most `time_tolerance`·(t1 − t0) (or, if
   /// the budget ran out, a larger undecided piece) containing a time at which a vertex and
   /// a triangle, or two edges, come within the contact tests' tolerance (L∞, see

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 #include "reconfig/collision/kdop.h"
@@ -19,10 +20,19 @@ using MovingTriangle = std::array<Eigen::Vector3d, 3>;
 /// The box of a triangle moving linearly from `p0` to `p1` over the fractions [mu0, mu1] of
 /// its step.
 inline Eigen::AlignedBox3d triangle_box_at(const MovingTriangle& p0, const MovingTriangle& p1, double mu0, double mu1) {
-  Eigen::AlignedBox3d box;
-  for (int c = 0; c < 3; ++c)
-    for (double mu : {mu0, mu1}) box.extend((1 - mu) * p0[c] + mu * p1[c]);
-  return box;
+  Eigen::Vector3d lo, hi;
+  for (int axis = 0; axis < 3; ++axis) {
+    double l = std::numeric_limits<double>::infinity(), h = -l;
+    for (int c = 0; c < 3; ++c)
+      for (const double mu : {mu0, mu1}) {
+        const double x = (1 - mu) * p0[c][axis] + mu * p1[c][axis];
+        l = std::min(l, x);
+        h = std::max(h, x);
+      }
+    lo[axis] = l;
+    hi[axis] = h;
+  }
+  return {lo, hi};
 }
 
 /// The pieces k (bit k) of `kCullPieces` equal pieces of a time step where the spacetime
