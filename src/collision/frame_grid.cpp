@@ -11,10 +11,6 @@ FrameGrid::FrameGrid(double width) : width_(width) {
   count_ = std::max(1, static_cast<int>(std::ceil(1 / width - 1e-9)));
 }
 
-double FrameGrid::lo(int k) const { return std::min(1.0, k * width_); }
-
-double FrameGrid::hi(int k) const { return k + 1 == count_ ? 1.0 : std::min(1.0, (k + 1) * width_); }
-
 int FrameGrid::frame_of(double t) const {
   // The estimate can be one off through rounding; the bounds decide.
   int k = std::clamp(static_cast<int>(std::ceil(t / width_)) - 1, 0, count_ - 1);

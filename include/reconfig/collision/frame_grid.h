@@ -9,6 +9,7 @@
 /// one frame holding t. So every instant of [0, 1] lies in exactly one frame, and an instant
 /// contact on a frame boundary belongs to the frame on its left.
 
+#include <algorithm>
 #include <utility>
 
 namespace reconfig::collision {
@@ -20,8 +21,8 @@ class FrameGrid {
 
   double width() const { return width_; }
   int count() const { return count_; }
-  double lo(int k) const;  ///< start of frame k
-  double hi(int k) const;  ///< end of frame k
+  double lo(int k) const { return std::min(1.0, k * width_); }  ///< start of frame k
+  double hi(int k) const { return k + 1 == count_ ? 1.0 : std::min(1.0, (k + 1) * width_); }  ///< end of frame k
 
   /// The frame holding instant t ∈ [0, 1].
   int frame_of(double t) const;

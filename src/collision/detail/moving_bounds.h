@@ -54,9 +54,12 @@ unsigned meeting_pieces(const MovingTriangle& a0, const MovingTriangle& a1, cons
     pa[0][c] = axis_values<family>(a0[c], 0), pa[1][c] = axis_values<family>(a1[c], 0);
     pb[0][c] = axis_values<family>(b0[c], 0), pb[1][c] = axis_values<family>(b1[c], 0);
   }
-  const auto& axes = dop_axes<family>();
-  Axes grow;
-  for (int j = 0; j < K; ++j) grow[j] = reach * axes[j].template head<3>().norm();
+  static const Axes kAxisLengths = [] {  // of the axes' spatial parts
+    Axes lengths;
+    for (int j = 0; j < K; ++j) lengths[j] = dop_axes<family>()[j].template head<3>().norm();
+    return lengths;
+  }();
+  const Axes grow = reach * kAxisLengths;
   // Over the whole step first: a pair apart along some axis throughout needs no pieces.
   {
     Axes lo_a = pa[0][0], hi_a = pa[0][0], lo_b = pb[0][0], hi_b = pb[0][0];

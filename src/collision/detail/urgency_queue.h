@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
+#include <cstdint>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -43,9 +45,12 @@ class UrgencyQueue {
   static constexpr int kBuckets = 128;
   static int bucket(double urgency) {
     if (std::isinf(urgency)) return kBuckets - 1;
-    int exponent = 0;
-    const double mantissa = std::frexp(urgency, &exponent);  // urgency = mantissa · 2^exponent, mantissa ∈ [1/2, 1)
-    const int k = 2 * exponent + (mantissa >= std::numbers::sqrt2 / 2 ? 1 : 0);  // [√2^(k−1), √2^k) → k
+    if (!(urgency >= 0x1p-1000)) return 0;  // tiny (or 0): the lowest bucket
+    // urgency = m · 2^e with m ∈ [1, 2), read off its bits (std::frexp is a library call).
+    const auto bits = std::bit_cast<std::uint64_t>(urgency);
+    const int e = static_cast<int>(bits >> 52) - 1023;
+    const double m = std::bit_cast<double>((bits & ((std::uint64_t{1} << 52) - 1)) | (std::uint64_t{1023} << 52));
+    const int k = 2 * e + (m >= std::numbers::sqrt2 ? 1 : 0);  // [√2^(k−1), √2^k) → k
     return std::clamp(k + kBuckets / 2, 0, kBuckets - 2);
   }
   std::array<std::vector<Item>, kBuckets> buckets_;
