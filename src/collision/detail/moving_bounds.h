@@ -70,26 +70,25 @@ unsigned meeting_pieces(const MovingTriangle& a0, const MovingTriangle& a1, cons
       }
     if (((lo_a - grow).array() > hi_b.array()).any() || (lo_b.array() > (hi_a + grow).array()).any()) return 0;
   }
-  unsigned meeting = (1u << kCullPieces) - 1;
-  for (int j = 0; j < K && meeting != 0; ++j) {
-    // Range of each triangle's projection at each piece boundary; a piece's range spans its two ends.
-    double lo_a[kCullPieces + 1], hi_a[kCullPieces + 1], lo_b[kCullPieces + 1], hi_b[kCullPieces + 1];
-    for (int k = 0; k <= kCullPieces; ++k) {
-      const double mu = static_cast<double>(k) / kCullPieces;
-      lo_a[k] = lo_b[k] = HUGE_VAL;
-      hi_a[k] = hi_b[k] = -HUGE_VAL;
-      for (int c = 0; c < 3; ++c) {
-        const double va = (1 - mu) * pa[0][c][j] + mu * pa[1][c][j], vb = (1 - mu) * pb[0][c][j] + mu * pb[1][c][j];
-        lo_a[k] = std::min(lo_a[k], va), hi_a[k] = std::max(hi_a[k], va);
-        lo_b[k] = std::min(lo_b[k], vb), hi_b[k] = std::max(hi_b[k], vb);
-      }
+  // Every axis at once: the range of each triangle's projections at each piece boundary (a
+  // piece's range spans its two ends).
+  std::array<Axes, kCullPieces + 1> lo_a, hi_a, lo_b, hi_b;
+  for (int k = 0; k <= kCullPieces; ++k) {
+    const double mu = static_cast<double>(k) / kCullPieces;
+    const auto at = [&](const std::array<Axes, 3>(&p)[2], int c) -> Axes { return (1 - mu) * p[0][c] + mu * p[1][c]; };
+    lo_a[k] = hi_a[k] = at(pa, 0);
+    lo_b[k] = hi_b[k] = at(pb, 0);
+    for (int c = 1; c < 3; ++c) {
+      const Axes va = at(pa, c), vb = at(pb, c);
+      lo_a[k] = lo_a[k].cwiseMin(va), hi_a[k] = hi_a[k].cwiseMax(va);
+      lo_b[k] = lo_b[k].cwiseMin(vb), hi_b[k] = hi_b[k].cwiseMax(vb);
     }
-    for (int k = 0; k < kCullPieces; ++k) {
-      if (!(meeting & (1u << k))) continue;
-      const double a_lo = std::min(lo_a[k], lo_a[k + 1]) - grow[j], a_hi = std::max(hi_a[k], hi_a[k + 1]) + grow[j];
-      const double b_lo = std::min(lo_b[k], lo_b[k + 1]), b_hi = std::max(hi_b[k], hi_b[k + 1]);
-      if (a_lo > b_hi || b_lo > a_hi) meeting &= ~(1u << k);
-    }
+  }
+  unsigned meeting = 0;
+  for (int k = 0; k < kCullPieces; ++k) {
+    const Axes a_lo = lo_a[k].cwiseMin(lo_a[k + 1]) - grow, a_hi = hi_a[k].cwiseMax(hi_a[k + 1]) + grow;
+    const Axes b_lo = lo_b[k].cwiseMin(lo_b[k + 1]), b_hi = hi_b[k].cwiseMax(hi_b[k + 1]);
+    if (!((a_lo.array() > b_hi.array()).any() || (b_lo.array() > a_hi.array()).any())) meeting |= 1u << k;
   }
   return meeting;
 }
