@@ -9,25 +9,14 @@
 
 #include "collision/detail/sample_axes.h"
 #include "reconfig/collision/body_tree.h"
+#include "support/random_soup.h"
 
 namespace reconfig::collision {
 namespace {
 
-/// A soup of `count` random triangles, of sizes from slivers to a third of the unit box.
+/// A soup of `count` random triangles in [−1, 1]³, of sizes from slivers to a third of the box.
 geometry::Mesh random_soup(std::mt19937& rng, int count) {
-  std::uniform_real_distribution<double> unit(-1, 1), size(0.01, 0.3);
-  geometry::Mesh mesh;
-  mesh.V.resize(3 * count, 3);
-  mesh.F.resize(count, 3);
-  for (int f = 0; f < count; ++f) {
-    const Eigen::RowVector3d center(unit(rng), unit(rng), unit(rng));
-    const double s = size(rng);
-    for (int c = 0; c < 3; ++c) {
-      mesh.V.row(3 * f + c) = center + s * Eigen::RowVector3d(unit(rng), unit(rng), unit(rng));
-      mesh.F(f, c) = 3 * f + c;
-    }
-  }
-  return mesh;
+  return testing::random_soup(rng, count, {.lo = -1, .hi = 1, .min_size = 0.01, .max_size = 0.3});
 }
 
 /// The triangles under a node.

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "exact_kernels_test_util.h"
+#include "support/random_soup.h"
 
 namespace reconfig::geometry {
 namespace {
@@ -29,22 +30,10 @@ bool overlap(const AlignedBox3d& a, const AlignedBox3d& b) {
   return true;
 }
 
-/// A triangle soup: n triangles of size ~`size` in the unit cube; coordinates snapped to a
-/// 1/64 grid so that touching boxes (equal coordinates) are common.
+/// A triangle soup: n triangles of size ~`size` around points of the unit cube; coordinates
+/// snapped to a 1/64 grid so that touching boxes (equal coordinates) are common.
 Mesh random_soup(std::mt19937& rng, int n, double size) {
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  Mesh mesh;
-  mesh.V.resize(3 * n, 3);
-  mesh.F.resize(n, 3);
-  for (int f = 0; f < n; ++f) {
-    const Vector3d center(unit(rng), unit(rng), unit(rng));
-    for (int c = 0; c < 3; ++c) {
-      const Vector3d p = center + size * Vector3d(unit(rng), unit(rng), unit(rng));
-      mesh.V.row(3 * f + c) = (p * 64).array().round().matrix().transpose() / 64;
-      mesh.F(f, c) = 3 * f + c;
-    }
-  }
-  return mesh;
+  return testing::random_soup(rng, n, {.min_size = size, .max_size = size, .grid = 1.0 / 64});
 }
 
 Pairs brute_pairs(const Mesh& a, const Mesh& b) {
