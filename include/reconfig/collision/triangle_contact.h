@@ -15,7 +15,8 @@ struct TriangleContact {
   int part_b = 0, triangle_b = 0;
   double t0 = 0, t1 = 0;
   /// Conservative box of where the two triangles meet during [t0, t1]: the intersection of
-  /// the boxes they sweep over it.
+  /// the boxes they sweep over it, or, where the narrow phase reported [t0, t1] in pieces, the
+  /// union of those over each piece.
   Eigen::AlignedBox3d box;
   /// Conservative mode only: the proxies do not intersect here, but the true motion (within
   /// the proxy tolerance of them) may.

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <functional>
 #include <map>
+#include <span>
 #include <tuple>
 
 #include "collision/detail/box_grid.h"
@@ -452,34 +453,52 @@ double process(const Traversal<family>& tr, const WorkItem& item, std::vector<Wo
       const auto time_at = [&](double mu) { return mu == 0 ? t0 : mu == 1 ? t1 : t0 + mu * (t1 - t0); };
       const auto mu_at = [&](double t) { return (t - t0) / (t1 - t0); };
       // Reports the contact over step parameters [mu0, mu1] clipped to each of the item's frames.
+      // Reports, as one contact per frame, a run of touching pieces of the step (step
+      // parameters) in which the triangles intersect: its time clipped to the frame, and the
+      // union over its pieces of where the triangles may meet during each (the box where they
+      // meet over a union of pieces would be larger, and depend on which pieces are reported).
       const auto emit = [&](const MovingTriangle& a0, const MovingTriangle& a1, const MovingTriangle& b0,
-                            const MovingTriangle& b1, double mu0, double mu1, bool possible) {
-        const auto report = [&](double lo, double hi, double mu_lo, double mu_hi) {
-          // Where the triangles (or, for a possible contact, the true motions within the
-          // deviations) may meet during [lo, hi]; nowhere if the boxes miss each other there,
-          // which happens where a span the narrow phase reports whole is clipped to a frame.
-          // The padding absorbs the rounding of the boxes.
+                            const MovingTriangle& b1, std::span<const TimeInterval> run, bool possible) {
+        // Where the triangles (or, for a possible contact, the true motions within the
+        // deviations) may meet over step parameters [mu_lo, mu_hi]; nowhere if the boxes miss
+        // each other there, which happens where a piece reported whole is clipped to a frame.
+        // The padding absorbs the rounding of the boxes.
+        const auto meeting_box = [&](double mu_lo, double mu_hi) {
           const double grow_a = (possible ? deviation_a : 0.0) + tr.pad, grow_b = (possible ? deviation_b : 0.0) + tr.pad;
           const Eigen::AlignedBox3d box_a = triangle_box_at(a0, a1, mu_lo, mu_hi);
           const Eigen::AlignedBox3d box_b = triangle_box_at(b0, b1, mu_lo, mu_hi);
           Eigen::AlignedBox3d box = possible ? Eigen::AlignedBox3d() : box_a.intersection(box_b);
           if (box.isEmpty()) box = inflated(box_a, grow_a).intersection(inflated(box_b, grow_b));
+          return box;
+        };
+        // The contact over [lo, hi] (within one frame and the run).
+        const auto report = [&](double lo, double hi) {
+          Eigen::AlignedBox3d box;
+          for (const TimeInterval& piece : run) {
+            const double p_lo = time_at(piece.lo), p_hi = time_at(piece.hi);
+            if (p_hi < lo || p_lo > hi) continue;
+            box.extend(meeting_box(p_lo < lo ? mu_at(lo) : piece.lo, p_hi > hi ? mu_at(hi) : piece.hi));
+          }
           if (box.isEmpty()) return;
           context.contacts.push_back(
               {item.pair, {line.a, na.triangle, line.b, nb.triangle, lo, hi, round_out(box, tr.cell(item.pair)), possible, t0, t1}});
         };
-        const double ta = time_at(mu0), tb = time_at(mu1);
+        const double ta = time_at(run.front().lo), tb = time_at(run.back().hi);
         if (ta == tb) {
           const int k = tr.grid.frame_of(ta);
-          if (k >= first_frame && k <= last_frame) report(ta, ta, mu0, mu0);
+          if (k >= first_frame && k <= last_frame) report(ta, ta);
           return;
         }
         const auto [f0, f1] = tr.grid.frames_overlapping(ta, tb);
         for (int k = std::max(f0, first_frame); k <= std::min(f1, last_frame); ++k) {
-          const bool clip_lo = tr.grid.lo(k) > ta, clip_hi = tr.grid.hi(k) < tb;
-          const double lo = clip_lo ? tr.grid.lo(k) : ta, hi = clip_hi ? tr.grid.hi(k) : tb;
-          if (hi > lo) report(lo, hi, clip_lo ? mu_at(lo) : mu0, clip_hi ? mu_at(hi) : mu1);
+          const double lo = std::max(ta, tr.grid.lo(k)), hi = std::min(tb, tr.grid.hi(k));
+          if (hi > lo) report(lo, hi);
         }
+      };
+      const auto emit_one = [&](const MovingTriangle& a0, const MovingTriangle& a1, const MovingTriangle& b0,
+                                const MovingTriangle& b1, double mu0, double mu1, bool possible) {
+        const TimeInterval piece{mu0, mu1};
+        emit(a0, a1, b0, b1, std::span(&piece, 1), possible);
       };
       if (s1 - s0 == 1) {
         const MovingTriangle a0 = tr.corners(item.pair, 0, na.triangle, s0);
@@ -521,7 +540,11 @@ double process(const Traversal<family>& tr, const WorkItem& item, std::vector<Wo
         const TrianglePairCcdResult spans = triangle_pair_ccd(request);
         stats.narrow_pieces += spans.pieces;
         stats.contact_tests += spans.contact_tests;
-        for (const auto& [mu0, mu1] : spans.intervals) emit(a0, a1, b0, b1, mu0, mu1, false);
+        const std::vector<TimeInterval>& pieces = spans.intervals;
+        for (std::size_t first = 0, end = 1; first < pieces.size(); first = end++) {
+          while (end < pieces.size() && pieces[end].lo <= pieces[end - 1].hi) ++end;  // a run of touching pieces
+          emit(a0, a1, b0, b1, std::span(pieces).subspan(first, end - first), false);
+        }
         if (!spans.any() && tr.options.conservative) {
           // The proxies miss, but the true motions stray up to the deviations from them: report
           // the sixteenths of the step where the triangles' spacetime k-DOPs, so inflated, meet.
@@ -536,7 +559,7 @@ double process(const Traversal<family>& tr, const WorkItem& item, std::vector<Wo
                 dop_b.extend((1 - mu) * b0[c] + mu * b1[c], mu);
               }
             dop_a.inflate(reach);
-            if (dop_a.overlaps(dop_b)) emit(a0, a1, b0, b1, lo, hi, true);
+            if (dop_a.overlaps(dop_b)) emit_one(a0, a1, b0, b1, lo, hi, true);
           }
         }
         return;
@@ -545,7 +568,7 @@ double process(const Traversal<family>& tr, const WorkItem& item, std::vector<Wo
         ++stats.narrow_phase;
         const MovingTriangle a = tr.corners(item.pair, 0, na.triangle, s0);
         const MovingTriangle b = tr.corners(item.pair, 1, nb.triangle, s0);
-        if (geometry::triangles_intersect(a[0], a[1], a[2], b[0], b[1], b[2])) emit(a, a, b, b, 0, 1, false);
+        if (geometry::triangles_intersect(a[0], a[1], a[2], b[0], b[1], b[2])) emit_one(a, a, b, b, 0, 1, false);
       }
     };
     if (single_step || (!line.moving[0] && !line.moving[1])) {
