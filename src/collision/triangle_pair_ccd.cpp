@@ -73,7 +73,7 @@ bool boxes_apart(const Motion& m, double lo, double hi, double margin) {
   return false;
 }
 
-/// The buffers of one thread's calls.
+/// The buffers of one thread's calls (so `relevant` must not call `triangle_pair_ccd`).
 struct Scratch {
   std::vector<Piece> queue;
   std::vector<CoplanarityCubic> cubics;

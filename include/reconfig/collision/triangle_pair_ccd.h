@@ -51,8 +51,9 @@ struct TrianglePairCcdRequest {
   /// Optional: whether the caller cares about the times of a piece [lo, hi] of the step (in
   /// step parameters, 0 at t0 and 1 at t1), asked of every piece where a contact may occur
   /// before it is tested or halved. A piece it rejects is dropped, with its halves; every
-  /// other piece is treated as without it. (The detector rejects the pieces
-  /// where whatever the triangles could meet in lies inside a group it has found already.)
+  /// other piece is treated as without it. (The detector rejects the pieces where whatever the
+  /// triangles could meet in lies inside a group it has found already.) It must not call
+  /// `triangle_pair_ccd` itself.
   std::function<bool(double lo, double hi)> relevant;
   /// Whether pieces reported whole that touch merge into one interval. Off, each is its own
   /// interval, so that what is reported of a time does not depend on what is reported next to
@@ -65,11 +66,11 @@ struct TrianglePairCcdRequest {
 struct TrianglePairCcdResult {
   /// Sorted, disjoint closed intervals within [t0, t1] (without `merge_pieces`, touching ones
   /// may share an end) covering every time at which the closed triangles share a point (no
-  /// false negatives), except times that lie only in pieces `relevant` rejected. Inflation: a reported time is either a
-  /// true intersection time or lies in a piece of at most `time_tolerance`·(t1 − t0) (or, if
-  /// the budget ran out, a larger undecided piece) containing a time at which a vertex and
-  /// a triangle, or two edges, come within the contact tests' tolerance (L∞, see
-  /// `ccd_primitives.h`). Endpoints are rounded outward.
+  /// false negatives), except times that lie only in pieces `relevant` rejected. Inflation: a
+  /// reported time is either a true intersection time or lies in a piece of at most
+  /// `time_tolerance`·(t1 − t0) (or, if the budget ran out, a larger undecided piece)
+  /// containing a time at which a vertex and a triangle, or two edges, come within the contact
+  /// tests' tolerance (L∞, see `ccd_primitives.h`). Endpoints are rounded outward.
   std::vector<TimeInterval> intervals;
   bool budget_exhausted = false;  ///< some pieces were reported whole because of `max_pieces`
   int pieces = 0;                 ///< pieces of the step examined (work measure)

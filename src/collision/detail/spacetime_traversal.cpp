@@ -452,7 +452,6 @@ double process(const Traversal<family>& tr, const WorkItem& item, std::vector<Wo
       const auto [first_frame, last_frame] = item_frames(tr, {item.pair, item.node_a, item.node_b, s0, s1});
       const auto time_at = [&](double mu) { return mu == 0 ? t0 : mu == 1 ? t1 : t0 + mu * (t1 - t0); };
       const auto mu_at = [&](double t) { return (t - t0) / (t1 - t0); };
-      // Reports the contact over step parameters [mu0, mu1] clipped to each of the item's frames.
       // Reports, as one contact per frame, a run of touching pieces of the step (step
       // parameters) in which the triangles intersect: its time clipped to the frame, and the
       // union over its pieces of where the triangles may meet during each (the box where they
@@ -528,10 +527,11 @@ double process(const Traversal<family>& tr, const WorkItem& item, std::vector<Wo
         request.b_end = b1;
         request.time_tolerance = 1.0 / kNarrowPieces;  // of the step: pieces with a contact event are reported whole below that
         request.distance_tolerance = 1e-4;
-        // Each piece reported is a contact of its own, so that the contacts of a piece do not
-        // depend on those next to it; then pieces of the step where whatever the triangles
-        // meet in would fall inside the groups can be left out. (Not in conservative mode:
-        // there the absence of contacts matters too.)
+        // The pieces come back unmerged, and a contact's box is the union of its pieces'
+        // (`emit`), so that what a piece adds does not depend on the pieces next to it; then
+        // the pieces of the step where whatever the triangles meet in would fall inside the
+        // groups can be left out. (Not in conservative mode: there the absence of contacts
+        // matters too.)
         request.merge_pieces = false;
         if (!tr.options.conservative)
           request.relevant = [&](double lo, double hi) {
