@@ -1,7 +1,5 @@
 #include "reconfig/collision/body_tree.h"
 
-#include "reconfig/collision/kdop.h"
-
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cassert>
@@ -9,6 +7,8 @@
 #include <limits>
 #include <numeric>
 #include <utility>
+
+#include "reconfig/collision/kdop.h"
 
 namespace reconfig::collision {
 namespace {
