@@ -3,9 +3,12 @@
 #include <gtest/gtest.h>
 #include <tbb/task_arena.h>
 
+#include <atomic>
+#include <chrono>
 #include <random>
 #include <set>
 #include <sstream>
+#include <thread>
 #include <tuple>
 
 #include "reconfig/collision/consolidate.h"
@@ -566,6 +569,59 @@ TEST(SpacetimeDetector, ProxySamplesAreTheScenesPosesBitForBit) {
         }
       }
   EXPECT_GT(compared, 1000);
+}
+
+/// The steps run in parallel and report from whichever thread finishes one: the callbacks
+/// still come one at a time, in order, and returning false stops the detection.
+TEST(SpacetimeDetector, CallbacksComeOneAtATimeAndCancellingStops) {
+  const scene::Reconfigurable scene = random_scene(7);
+  const BodyTrees trees = build_body_trees(scene);
+  DetectorOptions options;
+  options.breadth_first_items = 1;  // every step in the depth-first phase, from the start
+  std::atomic<bool> inside = false;
+  std::atomic<int> overlapping = 0, progress_calls = 0, previews = 0;
+  double last = 0;
+  bool ordered = true;
+  const auto enter = [&] {
+    if (inside.exchange(true)) ++overlapping;
+    std::this_thread::sleep_for(std::chrono::microseconds(200));  // room for another thread to come in
+  };
+  DetectCallbacks callbacks;
+  callbacks.progress = [&](double fraction) {
+    enter();
+    ordered = ordered && fraction >= last;
+    last = fraction;
+    ++progress_calls;
+    inside = false;
+    return true;
+  };
+  callbacks.preview = [&](const TraversalPreview&) {
+    enter();
+    ++previews;
+    inside = false;
+  };
+  SpacetimeDetector detector(0, options);
+  ASSERT_TRUE(detector.detect(scene, trees, callbacks));
+  EXPECT_EQ(overlapping, 0);
+  EXPECT_TRUE(ordered);
+  EXPECT_EQ(last, 1.0);
+  EXPECT_GE(previews, 2);  // the steps report in batches, and once all are done
+  EXPECT_GE(progress_calls, 3);
+
+  // Cancelled in the depth-first phase, it stops with no result; the next detection is whole.
+  int refused = 0;
+  DetectCallbacks cancelling;
+  cancelling.progress = [&](double fraction) {
+    if (fraction <= 0.5) return true;
+    ++refused;
+    return false;
+  };
+  EXPECT_FALSE(detector.detect(scene, trees, cancelling));
+  EXPECT_EQ(refused, 1);  // asked no more once refused
+  ASSERT_TRUE(detector.detect(scene, trees));
+  SpacetimeDetector fresh(0, options);
+  ASSERT_TRUE(fresh.detect(scene, trees));
+  EXPECT_TRUE(same_groups(detector.groups(), fresh.groups()));
 }
 
 TEST(SpacetimeDetector, PreviewsNarrowDownToTheContacts) {

@@ -78,9 +78,12 @@ struct DetectionStats {
   long proxy_samples = 0;   ///< time samples over all parts' proxies
 };
 
+/// Called during a detection from any of its threads, one call at a time and in order,
+/// before `detect` or `update` returns.
 struct DetectCallbacks {
-  ProgressCallback progress;                              ///< fraction of levels; false cancels
-  std::function<void(const TraversalPreview&)> preview;  ///< after each level
+  ProgressCallback progress;                              ///< fraction done; false cancels
+  /// After each breadth-first level, then after every few proxy steps of the depth-first phase.
+  std::function<void(const TraversalPreview&)> preview;
 };
 
 /// The one piece of per-part data shared by every transition: its body-frame tree.

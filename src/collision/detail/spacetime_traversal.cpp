@@ -3,14 +3,18 @@
 #include <tbb/combinable.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_for_each.h>
 
 #include <algorithm>
+#include <atomic>
 #include <bit>
 #include <cassert>
 #include <cmath>
 #include <cstdint>
 #include <functional>
 #include <map>
+#include <memory>
+#include <mutex>
 #include <span>
 #include <tuple>
 
@@ -637,8 +641,8 @@ void add_stats(DetectionStats& into, const DetectionStats& s) {
 /// Work items per task in the breadth-first phase.
 constexpr std::size_t kBreadthFirstGrain = 4;
 
-/// Steps processed between two progress reports in the depth-first phase.
-constexpr std::size_t kStepsPerBatch = 16;
+/// Steps done between two progress reports (and previews) in the depth-first phase.
+constexpr std::size_t kStepsPerReport = 16;
 
 /// The groups of the contacts found so far, per pair timeline and proxy step: what pruning
 /// relies on.
@@ -712,28 +716,21 @@ StepLeaves hinted_leaves(const Traversal<family>& tr, const std::vector<ContactH
   return leaves;
 }
 
-/// Adds, to each step next to one that found contacts, the leaf pairs of the contacts that
-/// made the extents of that step's groups in the frames the two steps share: contacts persist
-/// from step to step (a drawer sliding past a door meets the same faces), so those pairs most
-/// likely make the extents of the neighbor's groups there too.
-/// @param found  the contacts found, per pair timeline and step
+/// The leaf pairs of the contacts that made the extents of a neighbor's groups, found there,
+/// in the frames it shares with step `step` of pair timeline `line`: contacts persist from
+/// step to step (a drawer sliding past a door meets the same faces), so those pairs most
+/// likely make the extents of the step's groups there too.
 template <DopFamily family>
-void add_neighbor_hints(const Traversal<family>& tr, const std::map<std::pair<int, int>, std::vector<TriangleContact>>& found,
-                        StepLeaves& leaves) {
-  if (tr.options.all_contacts) return;
-  for (const auto& [at, contacts] : found) {
-    const auto [line, step] = at;
-    for (const int next : {step - 1, step + 1}) {
-      if (next < 0 || next + 2 > static_cast<int>(tr.lines[line].times.size())) continue;
-      const auto [first, last] = tr.step_frames[line][next];
-      std::vector<TriangleContact> shared;  // in the frames both steps overlap
-      for (const TriangleContact& c : contacts)
-        if (const int frame = frame_of_contact(tr.grid, c); frame >= first && frame <= last) shared.push_back(c);
-      for (const ContactHint& hint : extreme_contacts(shared, tr.grid))
-        leaves[{line, next}].push_back(leaf_pair(tr, line, hint));
-    }
-  }
-  tidy(leaves);
+std::vector<std::pair<int, int>> neighbor_leaves(const Traversal<family>& tr, int line, int step,
+                                                 const std::vector<TriangleContact>& found) {
+  std::vector<std::pair<int, int>> leaves;
+  if (tr.options.all_contacts) return leaves;
+  const auto [first, last] = tr.step_frames[line][step];
+  std::vector<TriangleContact> shared;
+  for (const TriangleContact& c : found)
+    if (const int frame = frame_of_contact(tr.grid, c); frame >= first && frame <= last) shared.push_back(c);
+  for (const ContactHint& hint : extreme_contacts(shared, tr.grid)) leaves.push_back(leaf_pair(tr, line, hint));
+  return leaves;
 }
 
 template <DopFamily family>
@@ -812,67 +809,104 @@ bool run_traversal(const Traversal<family>& tr, const std::vector<ContactHint>& 
     for (std::size_t i = 0; i < items.size(); ++i)
       if (i == 0 || items[i].pair != items[i - 1].pair || items[i].s0 != items[i - 1].s0) steps.push_back({i, i + 1});
       else steps.back().second = i + 1;
-    // Two rounds: the even steps of every pair timeline, then the odd ones, which start from
-    // the triangle pairs that made their neighbors' extents (`add_neighbor_hints`).
-    std::vector<std::pair<std::size_t, std::size_t>> order;  // the runs of `steps`, even steps first
-    for (const auto& run : steps)
-      if (items[run.first].s0 % 2 == 0) order.push_back(run);
-    const std::size_t first_odd = order.size();
-    for (const auto& run : steps)
-      if (items[run.first].s0 % 2 == 1) order.push_back(run);
-    std::map<std::pair<int, int>, std::vector<TriangleContact>> found_by_step;  // in the first round
-    tbb::enumerable_thread_specific<UrgencyQueue<WorkItem>> queues;
-    for (std::size_t first = 0; first < order.size();) {
-      if (first == first_odd) add_neighbor_hints(tr, found_by_step, hinted);
-      const std::size_t end = std::min(first < first_odd ? first_odd : order.size(), first + kStepsPerBatch);
-      std::vector<std::vector<LineContact>> batch_contacts(end - first);
-      std::vector<DetectionStats> batch_stats(end - first);
-      tbb::parallel_for(first, end, [&](std::size_t g) {
-        std::vector<LineContact>& local = batch_contacts[g - first];
-        const ItemContext context{step_groups, local, batch_stats[g - first]};
-        // Best first: the item whose reach sticks out of the groups found so far the most for
-        // its size (children inherit their parent's protrusion), so that the contacts that
-        // make the groups' extremes come early and prune the rest; first of all
-        // the hinted leaf pairs, then the items where nothing is known yet, deepest first (to
-        // find a first contact soon).
-        BoundCache<family>& bounds = bound_caches.local();
-        UrgencyQueue<WorkItem>& queue = queues.local();  // empty, its buckets' memory kept from earlier steps
-        std::vector<WorkItem> children;
-        const auto run = [&](const WorkItem& item) {  // its contacts join the step's groups at once
-          const std::size_t known = local.size();
-          const double urgency = process(tr, item, children, context, bounds);
-          for (std::size_t c = known; c < local.size(); ++c) found.add(local[c].line, local[c].contact);
-          return urgency;
-        };
-        const WorkItem& first_item = items[order[g].first];
-        if (const auto at = hinted.find({first_item.pair, first_item.s0}); at != hinted.end())
-          for (const auto& [leaf_a, leaf_b] : at->second) run({first_item.pair, leaf_a, leaf_b, first_item.s0, first_item.s1});
-        for (std::size_t i = order[g].second; i-- > order[g].first;) queue.push(items[i], kUnknownUrgency);
-        while (!queue.empty()) {
-          const double urgency = run(queue.pop());
-          for (auto child = children.rbegin(); child != children.rend(); ++child) queue.push(*child, urgency);
-          children.clear();
+    const auto step_of = [&](std::size_t g) { return std::pair{items[steps[g].first].pair, items[steps[g].first].s0}; };
+    // The even steps of every pair timeline first; an odd step waits for its even neighbors,
+    // then starts from the triangle pairs that made their extents in the frames they share
+    // (`neighbor_leaves`). Otherwise a step starts as soon as a thread is free: there is no
+    // barrier between the rounds, and what a step finds depends on nothing else.
+    std::map<std::pair<int, int>, std::size_t> index_of;
+    for (std::size_t g = 0; g < steps.size(); ++g) index_of.emplace(step_of(g), g);
+    std::vector<std::vector<std::size_t>> neighbors(steps.size());  // of an odd step: its even neighbors
+    std::vector<std::vector<std::size_t>> unblocks(steps.size());   // of an even step: its odd neighbors
+    for (std::size_t g = 0; g < steps.size(); ++g) {
+      const auto [pair, s] = step_of(g);
+      if (s % 2 == 0) continue;
+      for (const int next : {s - 1, s + 1})
+        if (const auto at = index_of.find({pair, next}); at != index_of.end()) {
+          neighbors[g].push_back(at->second);
+          unblocks[at->second].push_back(g);
         }
-      });
-      for (std::size_t g = first; g < end; ++g) {
-        const WorkItem& step = items[order[g].first];
-        for (const LineContact& c : batch_contacts[g - first]) {
-          contacts.push_back(c.contact);
-          if (g < first_odd) found_by_step[{step.pair, step.s0}].push_back(c.contact);
+    }
+    const auto waiting = std::make_unique<std::atomic<int>[]>(steps.size());
+    std::vector<std::size_t> ready;  // the even steps, then the odd ones without even neighbors
+    for (const bool odd : {false, true})
+      for (std::size_t g = 0; g < steps.size(); ++g)
+        if ((step_of(g).second % 2 == 1) == odd) {
+          waiting[g] = static_cast<int>(neighbors[g].size());
+          if (neighbors[g].empty()) ready.push_back(g);
         }
-        add_stats(stats, batch_stats[g - first]);
-      }
+    std::vector<std::vector<LineContact>> step_contacts(steps.size());
+    std::vector<DetectionStats> step_stats(steps.size());
+    // Progress and previews, one call at a time, every `kStepsPerReport` steps done.
+    std::mutex reporting;
+    std::size_t done = 0;
+    std::vector<bool> finished(steps.size(), false);
+    std::vector<std::pair<double, double>> found_ranges = contact_ranges();
+    std::atomic<bool> cancelled = false;
+    const auto report = [&](std::size_t g) {
+      const std::lock_guard lock(reporting);
+      if (cancelled) return;
+      finished[g] = true;
+      for (const LineContact& c : step_contacts[g]) found_ranges.push_back({c.contact.t0, c.contact.t1});
+      if (++done % kStepsPerReport != 0 && done != steps.size()) return;
       if (callbacks.preview) {
-        std::vector<std::pair<double, double>> ranges = contact_ranges();
-        for (std::size_t g = end; g < order.size(); ++g) {
-          const WorkItem& item = items[order[g].first];
-          ranges.push_back({tr.lines[item.pair].times[item.s0], tr.lines[item.pair].times[item.s1]});
-        }
+        std::vector<std::pair<double, double>> ranges = found_ranges;
+        for (std::size_t h = 0; h < steps.size(); ++h)
+          if (!finished[h]) {
+            const auto [pair, s] = step_of(h);
+            ranges.push_back({tr.lines[pair].times[s], tr.lines[pair].times[s + 1]});
+          }
         callbacks.preview({depth, union_of(std::move(ranges))});
       }
-      if (!report_progress(callbacks.progress, 0.5 + 0.5 * static_cast<double>(end) / order.size())) return false;
-      first = end;
-    }
+      if (!report_progress(callbacks.progress, 0.5 + 0.5 * static_cast<double>(done) / steps.size())) cancelled = true;
+    };
+    tbb::enumerable_thread_specific<UrgencyQueue<WorkItem>> queues;
+    tbb::parallel_for_each(ready.begin(), ready.end(), [&](std::size_t g, tbb::feeder<std::size_t>& feeder) {
+      if (cancelled) return;
+      std::vector<LineContact>& local = step_contacts[g];
+      const ItemContext context{step_groups, local, step_stats[g]};
+      // Best first: the item whose reach sticks out of the groups found so far the most for
+      // its size (children inherit their parent's protrusion), so that the contacts that
+      // make the groups' extremes come early and prune the rest; first of all
+      // the hinted leaf pairs, then the items where nothing is known yet, deepest first (to
+      // find a first contact soon).
+      BoundCache<family>& bounds = bound_caches.local();
+      UrgencyQueue<WorkItem>& queue = queues.local();  // empty, its buckets' memory kept from earlier steps
+      std::vector<WorkItem> children;
+      const auto run = [&](const WorkItem& item) {  // its contacts join the step's groups at once
+        const std::size_t known = local.size();
+        const double urgency = process(tr, item, children, context, bounds);
+        for (std::size_t c = known; c < local.size(); ++c) found.add(local[c].line, local[c].contact);
+        return urgency;
+      };
+      const auto [pair, s] = step_of(g);
+      std::vector<std::pair<int, int>> leaves;
+      if (const auto at = hinted.find({pair, s}); at != hinted.end()) leaves = at->second;
+      for (const std::size_t h : neighbors[g]) {
+        std::vector<TriangleContact> beside;
+        for (const LineContact& c : step_contacts[h]) beside.push_back(c.contact);
+        for (const auto& leaf_pair : neighbor_leaves(tr, pair, s, beside)) leaves.push_back(leaf_pair);
+      }
+      std::sort(leaves.begin(), leaves.end());
+      leaves.erase(std::unique(leaves.begin(), leaves.end()), leaves.end());
+      for (const auto& [leaf_a, leaf_b] : leaves) run({pair, leaf_a, leaf_b, s, s + 1});
+      for (std::size_t i = steps[g].second; i-- > steps[g].first;) queue.push(items[i], kUnknownUrgency);
+      while (!queue.empty()) {
+        const double urgency = run(queue.pop());
+        for (auto child = children.rbegin(); child != children.rend(); ++child) queue.push(*child, urgency);
+        children.clear();
+      }
+      for (const std::size_t odd : unblocks[g])
+        if (--waiting[odd] == 0) feeder.add(odd);
+      report(g);
+    });
+    if (cancelled) return false;
+    for (const bool odd : {false, true})
+      for (std::size_t g = 0; g < steps.size(); ++g)
+        if ((step_of(g).second % 2 == 1) == odd) {
+          for (const LineContact& c : step_contacts[g]) contacts.push_back(c.contact);
+          add_stats(stats, step_stats[g]);
+        }
   }
   std::sort(contacts.begin(), contacts.end(), contact_less);
   // A hinted leaf pair that the search reaches again reports the same contacts again.
