@@ -15,7 +15,9 @@ namespace reconfig::collision::detail {
 class FrameContacts {
  public:
   /// @param gap  boxes closer than this (on every axis) count as meeting
-  explicit FrameContacts(double gap) : gap_(gap) {}
+  /// @param witnesses  whether the groups keep their parts and triangle pairs (pruning needs
+  ///        only their extents, which are the same either way)
+  explicit FrameContacts(double gap, bool witnesses = true) : gap_(gap), witnesses_(witnesses) {}
 
   /// Merges a contact of this pair of parts within this frame.
   void add(const TriangleContact& contact);
@@ -35,6 +37,7 @@ class FrameContacts {
 
  private:
   double gap_;
+  bool witnesses_;
   std::vector<CollisionInterval> groups_;
 };
 

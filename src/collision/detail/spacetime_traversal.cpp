@@ -668,7 +668,7 @@ class FoundSteps {
     if (step + 1 >= static_cast<int>(times.size()) || times[step + 1] != contact.step_t1) return;
     const auto [first, last] = tr_.grid.frames_overlapping(times[step], times[step + 1]);
     StepGroups& groups = groups_[line][step];
-    if (groups.empty()) groups.assign(last - first + 1, FrameContacts(tr_.gap(line)));
+    if (groups.empty()) groups.assign(last - first + 1, FrameContacts(tr_.gap(line), false));
     const int frame = frame_of_contact(tr_.grid, contact);
     assert(frame >= first && frame <= last);  // a step reports contacts in its own frames only
     groups[frame - first].add(contact);
