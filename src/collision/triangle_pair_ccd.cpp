@@ -16,7 +16,6 @@ namespace {
 using Eigen::Vector3d;
 
 constexpr int kContactTests = 15;  // 6 vertex–face + 9 edge–edge
-constexpr unsigned kAllTests = (1u << kContactTests) - 1;
 /// Pieces longer than this (fraction of the step) are split wherever the coplanarity filter
 /// cannot exclude a contact, without running the contact tests.
 constexpr double kScreenedWidth = 1.0 / 32;
@@ -73,6 +72,25 @@ bool boxes_apart(const Motion& m, double lo, double hi, double margin) {
   return false;
 }
 
+/// Whether the two primitives of contact test `index` (a vertex and a triangle, or two edges)
+/// keep their boxes over the whole step apart by more than `margin` along some axis: then they
+/// never touch, whatever the rounding of the positions, and the test cannot fire.
+bool primitives_apart(const Motion& m, int index, double margin) {
+  const auto [p, a, b, c] = test_vertices(index);
+  Eigen::AlignedBox3d first, second;
+  const auto add = [&](Eigen::AlignedBox3d& box, int k) {
+    box.extend(m.start[k]);
+    box.extend(m.end[k]);
+  };
+  add(first, p);
+  add(index < 6 ? second : first, a);
+  add(second, b);
+  add(second, c);
+  for (int i = 0; i < 3; ++i)
+    if (first.min()[i] > second.max()[i] + margin || second.min()[i] > first.max()[i] + margin) return true;
+  return false;
+}
+
 /// The buffers of one thread's calls (so `relevant` must not call `triangle_pair_ccd`).
 struct Scratch {
   std::vector<Piece> queue;
@@ -120,12 +138,17 @@ TrianglePairCcdResult triangle_pair_ccd(const TrianglePairCcdRequest& request) {
   std::vector<Piece>& queue = scratch.queue;
   std::vector<CoplanarityCubic>& cubics = scratch.cubics;
   std::vector<TimeInterval>& found = scratch.found;  // in normalized time
-  queue.assign(1, Piece{0.0, 1.0, kAllTests, 0});
+  // Only the tests whose primitives come near each other somewhere in the step can fire.
+  unsigned tests = 0;
+  for (int index = 0; index < kContactTests; ++index)
+    if (!primitives_apart(motion, index, box_margin)) tests |= 1u << index;
+  queue.assign(1, Piece{0.0, 1.0, tests, 0});
   cubics.clear();
   found.clear();
   std::size_t next = 0;
   std::array<MovingPoints, kContactTests> points;
   for (int index = 0; index < kContactTests; ++index) {
+    if (!(tests & (1u << index))) continue;
     const std::array<int, 4> vertices = test_vertices(index);
     for (int k = 0; k < 4; ++k) {
       points[index].start[k] = motion.start[vertices[k]];

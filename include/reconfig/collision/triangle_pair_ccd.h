@@ -11,8 +11,9 @@
 /// (coarsest pieces first): a piece on which no contact can occur has one status throughout,
 /// decided by one exact static test (`geometry::triangles_intersect`) at its middle time —
 /// evaluated at rounded vertex positions, which is safe because every "no contact" below is
-/// certified robust to that rounding. A contact needs its four points coplanar, so a cheap
-/// certified bound on that cubic (`coplanarity_cubic.h`) rules out most of the 15 tests on
+/// certified robust to that rounding. A test whose two primitives' boxes over the step stay
+/// apart is dropped at once; a contact needs its four points coplanar, so a cheap
+/// certified bound on that cubic (`coplanarity_cubic.h`) rules out most of the other tests on
 /// most pieces; a piece longer than 1/32 of the step where some cubic may vanish strictly
 /// inside is halved without running its contact test, shorter pieces (and cubics vanishing
 /// at a piece's end) run the contact tests (`ccd_primitives.h`); a piece where a contact may
