@@ -828,13 +828,11 @@ bool run_traversal(const Traversal<family>& tr, const std::vector<ContactHint>& 
         }
     }
     const auto waiting = std::make_unique<std::atomic<int>[]>(steps.size());
-    std::vector<std::size_t> ready;  // the even steps, then the odd ones without even neighbors
-    for (const bool odd : {false, true})
-      for (std::size_t g = 0; g < steps.size(); ++g)
-        if ((step_of(g).second % 2 == 1) == odd) {
-          waiting[g] = static_cast<int>(neighbors[g].size());
-          if (neighbors[g].empty()) ready.push_back(g);
-        }
+    std::vector<std::size_t> ready;  // the even steps, and the odd ones without even neighbors
+    for (std::size_t g = 0; g < steps.size(); ++g) {
+      waiting[g] = static_cast<int>(neighbors[g].size());
+      if (neighbors[g].empty()) ready.push_back(g);
+    }
     std::vector<std::vector<LineContact>> step_contacts(steps.size());
     std::vector<DetectionStats> step_stats(steps.size());
     // Progress and previews, one call at a time, every `kStepsPerReport` steps done.
