@@ -360,10 +360,11 @@ std::pair<int, int> item_frames(const Traversal<family>& tr, const WorkItem& ite
 /// [t0, t1], and within `box_between(t0, t1)`, the box where the item's contacts over that
 /// time can lie (empty if the two nodes cannot meet then), the `FrameContacts::protrusion` of
 /// that box; the largest over the frames. 0 if every contact the item could find would fall
-/// inside a group, or there is none to find.
+/// inside a group, or there is none to find. The frames after one whose protrusion reaches
+/// `enough` are left out (a caller asking only whether it is 0 passes the least double).
 template <DopFamily family>
 double protrusion(const Traversal<family>& tr, const WorkItem& item, const ItemContext& context, const auto& box_between,
-                  double from, double to) {
+                  double from, double to, double enough = std::numeric_limits<double>::infinity()) {
   constexpr double kUnknown = std::numeric_limits<double>::infinity();
   const auto [first, last] = item_frames(tr, item);  // `first`: that of the item's step groups
   const StepGroups* groups = item.s1 - item.s0 == 1 ? context.step_groups(item.pair, item.s0) : nullptr;
@@ -375,7 +376,7 @@ double protrusion(const Traversal<family>& tr, const WorkItem& item, const ItemC
     if (box.isEmpty()) continue;
     if (tr.options.all_contacts || !groups) return kUnknown;
     largest = std::max(largest, (*groups)[k - first].protrusion(t0, t1, box));
-    if (largest == kUnknown) return kUnknown;
+    if (largest >= enough) return largest;
   }
   return largest;
 }
@@ -519,7 +520,8 @@ double process(const Traversal<family>& tr, const WorkItem& item, std::vector<Wo
         // Contacts can only lie within the pieces where the triangles may meet.
         const double from = time_at(static_cast<double>(std::countr_zero(meeting)) / kCullPieces);
         const double to = time_at(static_cast<double>(std::bit_width(meeting)) / kCullPieces);
-        if (protrusion(tr, step, context, box_between, from, to) == 0) {
+        constexpr double kAny = std::numeric_limits<double>::denorm_min();  // whether it sticks out at all
+        if (protrusion(tr, step, context, box_between, from, to, kAny) == 0) {
           ++stats.pruned;
           return;
         }
@@ -539,7 +541,7 @@ double process(const Traversal<family>& tr, const WorkItem& item, std::vector<Wo
         request.merge_pieces = false;
         if (!tr.options.conservative)
           request.relevant = [&](double lo, double hi) {
-            return protrusion(tr, step, context, box_between, time_at(lo), time_at(hi)) > 0;
+            return protrusion(tr, step, context, box_between, time_at(lo), time_at(hi), kAny) > 0;
           };
         const TrianglePairCcdResult spans = triangle_pair_ccd(request);
         stats.narrow_pieces += spans.pieces;
