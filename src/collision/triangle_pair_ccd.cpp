@@ -82,7 +82,7 @@ bool primitives_apart(const Motion& m, int index, double margin) {
     box.extend(m.start[k]);
     box.extend(m.end[k]);
   };
-  add(first, p);
+  add(first, p);  // vertex p and face a b c, or edge p a and edge b c
   add(index < 6 ? second : first, a);
   add(second, b);
   add(second, c);

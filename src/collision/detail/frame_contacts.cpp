@@ -9,15 +9,8 @@
 namespace reconfig::collision::detail {
 
 void FrameContacts::add(const TriangleContact& contact) {
-  CollisionInterval grown;
-  if (witnesses_) {
-    grown = contact_interval(contact);
-  } else {
-    grown.t0 = contact.t0;
-    grown.t1 = contact.t1;
-    grown.box = contact.box;
-    grown.possible = contact.possible;
-  }
+  CollisionInterval grown = witnesses_ ? contact_interval(contact)
+                                       : CollisionInterval{contact.t0, contact.t1, {}, contact.box, false, contact.possible, {}};
   // A group that grew may meet groups it did not meet before: merge until it meets none.
   for (bool merged = true; merged;) {
     merged = false;
