@@ -684,12 +684,10 @@ class FoundSteps {
 /// Leaf pairs whose narrow phase runs first, per pair timeline and step.
 using StepLeaves = std::map<std::pair<int, int>, std::vector<std::pair<int, int>>>;
 
-/// Sorts each step's leaf pairs and drops repeats (the order they run in is then fixed).
-void tidy(StepLeaves& leaves) {
-  for (auto& [step, pairs] : leaves) {
-    std::sort(pairs.begin(), pairs.end());
-    pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
-  }
+/// Sorts a step's leaf pairs and drops repeats (the order they run in is then fixed).
+void tidy(std::vector<std::pair<int, int>>& pairs) {
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
 }
 
 /// The leaves of a hint's two triangles in the trees of pair timeline `line`.
@@ -714,7 +712,7 @@ StepLeaves hinted_leaves(const Traversal<family>& tr, const std::vector<ContactH
       leaves[{i, line.step_of(hint.t)}].push_back(leaf_pair(tr, i, hint));
     }
   }
-  tidy(leaves);
+  for (auto& [step, pairs] : leaves) tidy(pairs);
   return leaves;
 }
 
@@ -724,13 +722,13 @@ StepLeaves hinted_leaves(const Traversal<family>& tr, const std::vector<ContactH
 /// likely make the extents of the step's groups there too.
 template <DopFamily family>
 std::vector<std::pair<int, int>> neighbor_leaves(const Traversal<family>& tr, int line, int step,
-                                                 const std::vector<TriangleContact>& found) {
+                                                 const std::vector<LineContact>& found) {
   std::vector<std::pair<int, int>> leaves;
   if (tr.options.all_contacts) return leaves;
   const auto [first, last] = tr.step_frames[line][step];
   std::vector<TriangleContact> shared;
-  for (const TriangleContact& c : found)
-    if (const int frame = frame_of_contact(tr.grid, c); frame >= first && frame <= last) shared.push_back(c);
+  for (const LineContact& c : found)
+    if (const int frame = frame_of_contact(tr.grid, c.contact); frame >= first && frame <= last) shared.push_back(c.contact);
   for (const ContactHint& hint : extreme_contacts(shared, tr.grid)) leaves.push_back(leaf_pair(tr, line, hint));
   return leaves;
 }
@@ -882,13 +880,9 @@ bool run_traversal(const Traversal<family>& tr, const std::vector<ContactHint>& 
       const auto [pair, s] = step_of(g);
       std::vector<std::pair<int, int>> leaves;
       if (const auto at = hinted.find({pair, s}); at != hinted.end()) leaves = at->second;
-      for (const std::size_t h : neighbors[g]) {
-        std::vector<TriangleContact> beside;
-        for (const LineContact& c : step_contacts[h]) beside.push_back(c.contact);
-        for (const auto& leaf_pair : neighbor_leaves(tr, pair, s, beside)) leaves.push_back(leaf_pair);
-      }
-      std::sort(leaves.begin(), leaves.end());
-      leaves.erase(std::unique(leaves.begin(), leaves.end()), leaves.end());
+      for (const std::size_t h : neighbors[g])
+        for (const auto& leaf_pair : neighbor_leaves(tr, pair, s, step_contacts[h])) leaves.push_back(leaf_pair);
+      tidy(leaves);
       for (const auto& [leaf_a, leaf_b] : leaves) run({pair, leaf_a, leaf_b, s, s + 1});
       for (std::size_t i = steps[g].second; i-- > steps[g].first;) queue.push(items[i], kUnknownUrgency);
       while (!queue.empty()) {
