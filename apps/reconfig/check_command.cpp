@@ -10,6 +10,7 @@
 #include "command.h"
 #include "progress_bar.h"
 #include "reconfig/collision/detect_collisions.h"
+#include "reconfig/collision/detector_settings.h"
 #include "reconfig/collision/reference_check.h"
 #include "reconfig/common/input_error.h"
 #include "reconfig/common/write_atomically.h"
@@ -22,11 +23,13 @@ struct CheckOptions {
   std::string scene;
   bool json = false;
   bool reference = false;
-  double tolerance = 1e-3;
-  int dop = 28;
-  bool conservative = false;
-  bool all_contacts = false;
+  // The engine's settings given on the command line; each one given overrides the scene's.
+  double tolerance = collision::DetectorOptions{}.tolerance;
+  int dop = collision::halfspace_count(collision::DetectorOptions{}.dop);
+  bool conservative = collision::DetectorOptions{}.conservative;
   double box_resolution = collision::DetectorOptions{}.box_resolution;
+  scene::CollisionSettings given;  ///< which of them were given
+  bool all_contacts = false;
   int threads = 0;
   int samples = 1000;
   std::vector<std::string> transitions;
@@ -147,23 +150,23 @@ CheckOutcome run_reference(const scene::Reconfigurable& scene, const CheckOption
 CheckOutcome run_engine(const scene::Reconfigurable& scene, const CheckOptions& options,
                         const std::vector<int>& transitions, const ProgressCallback& progress) {
   collision::CollisionRequest request;
-  request.detector.tolerance = options.tolerance;
-  request.detector.dop = *collision::dop_family(options.dop);  // --dop is checked to be 8, 28 or 80
-  request.detector.conservative = options.conservative;
+  request.detector = collision::with_settings({}, scene.collision.overridden_by(options.given));
   request.detector.all_contacts = options.all_contacts;
-  request.detector.box_resolution = options.box_resolution;
   request.transitions = transitions;
   request.progress = progress;
   const collision::CollisionResult result = collision::detect_collisions(scene, request);
+  const collision::DetectorOptions& used = request.detector;
+  const int dop = collision::halfspace_count(used.dop);
   return {result.transitions,
-          fmt::format("spacetime engine, {}-DOP, tolerance {:g}{}{}", options.dop, options.tolerance,
-                      options.conservative ? ", conservative" : "", options.all_contacts ? ", every contact" : ""),
+          fmt::format("spacetime engine, {}-DOP, tolerance {:g}{}{}", dop, used.tolerance,
+                      used.conservative ? ", conservative" : "", options.all_contacts ? ", every contact" : ""),
           {{"method", "engine"},
-           {"dop", options.dop},
-           {"tolerance", options.tolerance},
-           {"conservative", options.conservative},
+           {"dop", dop},
+           {"tolerance", used.tolerance},
+           {"conservative", used.conservative},
            {"all_contacts", options.all_contacts},
-           {"box_resolution", options.box_resolution},
+           {"box_resolution", used.box_resolution},
+           {"frame", used.frame},
            {"proxy_samples", result.stats.proxy_samples},
            {"narrow_phase_tests", result.stats.narrow_phase}},
           0};
@@ -203,20 +206,22 @@ void add_check_command(CLI::App& app, int& exit_code) {
   command->add_flag("--json", options->json, "Print the result as JSON");
   command->add_flag("--reference", options->reference,
                     "Use the reference check (dense time sampling, exact static tests) instead of the engine");
-  command->add_option("--tolerance", options->tolerance, "Largest distance between proxy and true motion (engine)")
+  command->add_option("--tolerance", options->tolerance,
+                      "Largest distance between proxy and true motion (engine; overrides the scene's)")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
-  command->add_option("--dop", options->dop, "Spacetime k-DOP family of the engine's BVH")
+  command->add_option("--dop", options->dop, "Spacetime k-DOP family of the engine's BVH (overrides the scene's)")
       ->check(CLI::IsMember({8, 28, 80}))
       ->capture_default_str();
-  command->add_flag("--conservative", options->conservative,
-                    "Engine: also report near misses the true motion may turn into collisions (never misses one)");
+  command->add_flag("--conservative,!--no-conservative", options->conservative,
+                    "Engine: also report near misses the true motion may turn into collisions (never misses one); "
+                    "overrides the scene's");
   command->add_flag("--all-contacts", options->all_contacts,
                     "Engine: find every intersecting triangle pair instead of stopping once the intervals are known "
                     "(same intervals, slower on deep overlaps)");
   command->add_option("--box-resolution", options->box_resolution,
                       "Engine: round interval boxes outward to a grid of this fraction of the smaller part's size "
-                      "(0: exact boxes, slower on deep overlaps)")
+                      "(0: exact boxes, slower on deep overlaps; overrides the scene's)")
       ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
   command->add_option("--threads", options->threads, "Worker threads (default: all cores)")->check(CLI::NonNegativeNumber);
@@ -226,7 +231,14 @@ void add_check_command(CLI::App& app, int& exit_code) {
   command->add_option("--transition", options->transitions, "Only check these transitions (repeatable)");
   command->add_option("--report", options->report, "Also write a Markdown report to this file");
   command->add_option("--json-out", options->json_out, "Also write the JSON result to this file");
-  command->callback([options, &exit_code] { exit_code = run_check(*options); });
+  command->callback([command, options, &exit_code] {
+    if (command->count("--tolerance")) options->given.tolerance = options->tolerance;
+    if (command->count("--dop")) options->given.dop = options->dop;
+    if (command->count("--conservative") || command->count("--no-conservative"))
+      options->given.conservative = options->conservative;
+    if (command->count("--box-resolution")) options->given.box_resolution = options->box_resolution;
+    exit_code = run_check(*options);
+  });
 }
 
 }  // namespace reconfig::cli

@@ -3,21 +3,12 @@
 
 #include <fmt/format.h>
 
-#include <cmath>
-
+#include "reconfig/collision/detector_settings.h"
+#include "reconfig/scene/edits.h"
 #include "studio.h"
 
 namespace reconfig::studio {
 namespace {
-
-/// Why the settings cannot be used, or "" if they can.
-std::string settings_problem(const collision::DetectorOptions& options) {
-  if (!(options.tolerance > 0) || !std::isfinite(options.tolerance)) return "the tolerance must be a positive distance";
-  if (!(options.box_resolution >= 0 && options.box_resolution <= 1))
-    return "the box grid must be between 0 (exact boxes) and 100 % of a part's size";
-  if (!(options.frame > 0 && options.frame <= 1)) return "a frame must last more than 0 and at most the whole transition";
-  return "";
-}
 
 constexpr collision::DopFamily kFamilies[] = {collision::DopFamily::k8, collision::DopFamily::k28, collision::DopFamily::k80};
 constexpr const char* kFamilyNames[] = {"8-DOP (boxes)", "28-DOP", "80-DOP"};
@@ -43,17 +34,29 @@ void hint(const char* text) {
 }  // namespace
 
 bool Studio::set_detector_options(const collision::DetectorOptions& options) {
-  if (const std::string problem = settings_problem(options); !problem.empty()) {
+  const scene::CollisionSettings settings = collision::settings_of(options);
+  if (const std::string problem = settings.problem(); !problem.empty()) {
     set_status(fmt::format("collision settings not changed: {}", problem), true);
     return false;
   }
-  options_.collisions.detector = options;
-  if (document_) document_->set_collision_options(options_.collisions);
-  set_status(fmt::format("collision settings: {}", describe(options)));
+  if (!document_) {
+    options_.collisions.detector = options;  // for the designs opened next, unless they have their own
+  } else if (settings != document_->scene().collision) {
+    // Saved with the design, as one undoable edit.
+    if (const std::string refused = document_->execute(scene::set_collision_settings(settings)); !refused.empty()) {
+      set_status(fmt::format("collision settings not changed: {}", refused), true);
+      return false;
+    }
+  }
+  set_status(fmt::format("collision settings: {}", describe(detector_options())));
   return true;
 }
 
-void Studio::show_collision_settings() { settings_draft_ = options_.collisions.detector; }
+const collision::DetectorOptions& Studio::detector_options() const {
+  return document_ ? document_->detector_options() : options_.collisions.detector;
+}
+
+void Studio::show_collision_settings() { settings_draft_ = detector_options(); }
 
 void Studio::draw_collision_settings() {
   if (!settings_draft_) return;

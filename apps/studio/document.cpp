@@ -2,6 +2,7 @@
 
 #include <system_error>
 
+#include "reconfig/collision/detector_settings.h"
 #include "reconfig/common/input_error.h"
 #include "reconfig/common/write_atomically.h"
 #include "reconfig/geometry/display_simplification.h"
@@ -24,7 +25,7 @@ std::unique_ptr<Document> Document::recover(const fs::path& file, collision::Col
 }
 
 Document::Document(scene::Reconfigurable scene, fs::path file, collision::CollisionServiceOptions options)
-    : file_(std::move(file)), service_(std::make_unique<collision::CollisionService>(options)) {
+    : file_(std::move(file)), studio_options_(std::move(options)) {
   scene::DirtySet everything;
   everything.structure_changed = true;
   publish(std::make_shared<const scene::Reconfigurable>(std::move(scene)), everything);
@@ -59,7 +60,19 @@ void Document::publish(std::shared_ptr<const scene::Reconfigurable> next, const 
             std::make_shared<const geometry::Mesh>(geometry::simplify_for_display(*part_meshes_[part], budget));
       }
   }
-  version_ = service_->submit(scene_, dirty);
+  collision::CollisionServiceOptions wanted = studio_options_;
+  wanted.detector = collision::with_settings(studio_options_.detector, scene_->collision);
+  if (service_ && collision::settings_of(wanted.detector) == collision::settings_of(service_options_.detector)) {
+    version_ = service_->submit(scene_, dirty);
+    return;
+  }
+  // First, or with other settings: a new service detects every transition (the old one's work
+  // is abandoned).
+  service_options_ = wanted;
+  service_ = std::make_unique<collision::CollisionService>(wanted);
+  scene::DirtySet all;
+  all.structure_changed = true;
+  version_ = service_->submit(scene_, all);
 }
 
 std::string Document::execute(std::unique_ptr<scene::Command> command) {
@@ -73,13 +86,6 @@ std::string Document::execute(std::unique_ptr<scene::Command> command) {
   publish(std::move(next), dirty);
   modified_ = autosave_pending_ = true;
   return "";
-}
-
-void Document::set_collision_options(const collision::CollisionServiceOptions& options) {
-  service_ = std::make_unique<collision::CollisionService>(options);
-  scene::DirtySet everything;
-  everything.structure_changed = true;
-  version_ = service_->submit(scene_, everything);
 }
 
 bool Document::undo() { return step_history(false); }

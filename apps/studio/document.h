@@ -25,6 +25,7 @@ class Document {
   using Clock = std::chrono::steady_clock;
 
   /// Loads a scene file. @throws InputError naming the file and JSON path of the problem
+  /// `options` are the studio's: the design's own collision settings take precedence.
   static std::unique_ptr<Document> open(const std::filesystem::path& file,
                                         collision::CollisionServiceOptions options = {});
   /// Loads the autosave of `file` instead of the file itself (crash recovery): the document
@@ -76,9 +77,10 @@ class Document {
   static constexpr int kDetailedTriangles = 20000;
 
   const collision::CollisionService& collisions() const { return *service_; }
-  /// Detects collisions with other settings from now on: a new service takes over the current
-  /// design and detects every transition again (the old one's work is abandoned).
-  void set_collision_options(const collision::CollisionServiceOptions& options);
+  /// How collisions are detected now: the studio's options with the design's collision
+  /// settings. An edit of those (`scene::set_collision_settings`, or undoing one) hands the
+  /// design to a new service, which detects every transition again.
+  const collision::DetectorOptions& detector_options() const { return service_options_.detector; }
   /// The version number of the current scene as submitted to the collision service.
   std::uint64_t version() const { return version_; }
 
@@ -93,6 +95,8 @@ class Document {
   std::vector<std::shared_ptr<const geometry::Mesh>> moving_meshes_;
   std::filesystem::path file_;
   scene::History history_;
+  collision::CollisionServiceOptions studio_options_;   ///< before the design's settings
+  collision::CollisionServiceOptions service_options_;  ///< those of `service_`
   std::unique_ptr<collision::CollisionService> service_;
   std::uint64_t version_ = 0;
   bool modified_ = false;

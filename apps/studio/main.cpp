@@ -87,18 +87,22 @@ int main(int argc, char** argv) {
   app.add_option("--time", options.time, "start at this time of the first transition");
   app.add_flag("--ghosts", options.ghosts, "show ghosts of moving parts");
   collision::DetectorOptions& detector = options.studio.collisions.detector;
-  app.add_option("--tolerance", detector.tolerance, "collision settings: largest distance between proxy and true motion")
+  app.add_option("--tolerance", detector.tolerance,
+                 "collision settings (of designs that save none): largest distance between proxy and true motion")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
-  app.add_option("--dop", options.dop, "collision settings: k-DOP family of the spacetime hierarchies")
+  app.add_option("--dop", options.dop,
+                 "collision settings (of designs that save none): k-DOP family of the spacetime hierarchies")
       ->check(CLI::IsMember({8, 28, 80}))
       ->capture_default_str();
   app.add_option("--box-resolution", detector.box_resolution,
-                 "collision settings: grid of the collision boxes, a fraction of the smaller part's size (0: exact)")
+                 "collision settings (of designs that save none): grid of the collision boxes, a fraction of the "
+                 "smaller part's size (0: exact)")
       ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
   app.add_flag("--conservative", detector.conservative,
-               "collision settings: also report near misses the true motion may turn into collisions");
+               "collision settings (of designs that save none): also report near misses the true motion may "
+               "turn into collisions");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {

@@ -163,7 +163,7 @@ void Studio::set_time(double t) { time_ = std::clamp(t, 0.0, 1.0); }
 
 void Studio::step(int frames) {
   playing_ = false;
-  set_time(time_ + frames * options_.collisions.detector.frame);
+  set_time(time_ + frames * detector_options().frame);
 }
 
 void Studio::toggle_play() {

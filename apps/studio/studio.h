@@ -97,11 +97,14 @@ class Studio {
   void frame_all();
   /// Executes a scene command as one undoable step; refusals go to the status line.
   bool execute(std::unique_ptr<scene::Command> command);
-  /// How collisions are detected (tolerance, k-DOP family, box grid, conservative mode), for
-  /// the open design and those opened later: detection starts over. Settings out of range are
-  /// refused (the reason goes to the status line). @return success
+  /// How collisions are detected (tolerance, k-DOP family, box grid, frame, conservative
+  /// mode). With a design open they are saved with it, as one undoable edit, and detection
+  /// starts over; else they are the defaults for designs opened later without settings of
+  /// their own. Settings out of range are refused (the reason goes to the status line).
+  /// @return success
   bool set_detector_options(const collision::DetectorOptions& options);
-  const collision::DetectorOptions& detector_options() const { return options_.collisions.detector; }
+  /// Those of the open design (the studio's with the design's own), else the studio's.
+  const collision::DetectorOptions& detector_options() const;
   /// Opens the Collisions > Settings window (edits apply with its Apply button).
   void show_collision_settings();
 

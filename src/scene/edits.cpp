@@ -391,4 +391,37 @@ std::unique_ptr<Command> replace_part_mesh(std::string part, geometry::Mesh mesh
   });
 }
 
+namespace {
+
+class CollisionSettingsEdit final : public Command {
+ public:
+  explicit CollisionSettingsEdit(CollisionSettings settings) : settings_(std::move(settings)) {}
+
+  DirtySet apply(Reconfigurable& scene) override {
+    if (const std::string problem = settings_.problem(); !problem.empty()) refuse(problem);
+    before_ = scene.collision;
+    scene.collision = settings_;
+    return everything();
+  }
+  DirtySet revert(Reconfigurable& scene) override {
+    scene.collision = before_;
+    return everything();
+  }
+  std::string label() const override { return "change collision settings"; }
+
+ private:
+  static DirtySet everything() {
+    DirtySet dirty;
+    dirty.structure_changed = true;
+    return dirty;
+  }
+  CollisionSettings settings_, before_;
+};
+
+}  // namespace
+
+std::unique_ptr<Command> set_collision_settings(CollisionSettings settings) {
+  return std::make_unique<CollisionSettingsEdit>(std::move(settings));
+}
+
 }  // namespace reconfig::scene

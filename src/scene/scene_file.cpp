@@ -236,8 +236,32 @@ Transition read_transition(const JsonCursor& c, const fs::path& base_dir) {
   return transition;
 }
 
+CollisionSettings read_collision_settings(const JsonCursor& c) {
+  c.expect_object({"tolerance", "dop", "box_resolution", "frame", "conservative"});
+  CollisionSettings settings;
+  if (c.has("tolerance")) settings.tolerance = c["tolerance"].as_number();
+  if (c.has("dop")) {
+    if (!c["dop"].value().is_number_integer()) c["dop"].fail("expected 8, 28 or 80");
+    settings.dop = c["dop"].value().get<int>();
+  }
+  if (c.has("box_resolution")) settings.box_resolution = c["box_resolution"].as_number();
+  if (c.has("frame")) settings.frame = c["frame"].as_number();
+  if (c.has("conservative")) settings.conservative = c["conservative"].as_bool();
+  // Each setting on its own, so that the error names the one at fault.
+  const auto check = [&](const char* key, auto CollisionSettings::*setting) {
+    CollisionSettings only;
+    only.*setting = settings.*setting;
+    if (const std::string problem = only.problem(); !problem.empty()) c[key].fail(problem);
+  };
+  check("tolerance", &CollisionSettings::tolerance);
+  check("dop", &CollisionSettings::dop);
+  check("box_resolution", &CollisionSettings::box_resolution);
+  check("frame", &CollisionSettings::frame);
+  return settings;
+}
+
 Reconfigurable read_scene(const JsonCursor& root, const fs::path& base_dir) {
-  root.expect_object({"format", "version", "units", "parts", "states", "transitions"});
+  root.expect_object({"format", "version", "units", "parts", "states", "transitions", "collision"});
   if (root["format"].as_string() != kFormat)
     root["format"].fail(fmt::format("expected \"{}\"", kFormat));
   const JsonCursor version = root["version"];
@@ -255,9 +279,20 @@ Reconfigurable read_scene(const JsonCursor& root, const fs::path& base_dir) {
     for (std::size_t i = 0, n = transitions.expect_array(); i < n; ++i)
       scene.transitions.push_back(read_transition(transitions[i], base_dir));
   }
+  if (root.has("collision")) scene.collision = read_collision_settings(root["collision"]);
   compile_linkage_drives(scene);
   validate_scene(scene);
   return scene;
+}
+
+ordered_json collision_settings_json(const CollisionSettings& settings) {
+  ordered_json j = ordered_json::object();
+  if (settings.tolerance) j["tolerance"] = *settings.tolerance;
+  if (settings.dop) j["dop"] = *settings.dop;
+  if (settings.box_resolution) j["box_resolution"] = *settings.box_resolution;
+  if (settings.frame) j["frame"] = *settings.frame;
+  if (settings.conservative) j["conservative"] = *settings.conservative;
+  return j;
 }
 
 ordered_json vector_json(const Eigen::Vector3d& v) { return ordered_json::array({v.x(), v.y(), v.z()}); }
@@ -340,7 +375,7 @@ Reconfigurable parse_scene(const std::string& json_text, const fs::path& base_di
   nlohmann::json document;
   try {
     document = nlohmann::json::parse(json_text);
-  } catch (const nlohmann::json::parse_error& error) {
+  } catch (const nlohmann::json::exception& error) {  // parse_error, and out_of_range for a number like 1e999
     // nlohmann's message reads "[json.exception.parse_error.101] parse error at line 3, column 5: ..."
     std::string message = error.what();
     const auto at = message.find("] ");
@@ -388,6 +423,7 @@ std::string scene_to_json(const Reconfigurable& scene, const fs::path& base_dir)
     if (transition.linkage) entry["linkage"] = drive_json(*transition.linkage, base_dir);
     root["transitions"].push_back(entry);
   }
+  if (!scene.collision.empty()) root["collision"] = collision_settings_json(scene.collision);
   return root.dump(2) + "\n";
 }
 

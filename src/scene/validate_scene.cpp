@@ -138,6 +138,7 @@ bool poses_match(const motion::Pose& a, const motion::Pose& b, const PoseToleran
 
 void validate_scene(const Reconfigurable& scene, const PoseTolerance& tolerance) {
   if (scene.units.empty()) fail("units", "units must not be empty");
+  if (const std::string problem = scene.collision.problem(); !problem.empty()) fail("collision", problem);
   check_unique_names(scene.parts, "parts");
   check_unique_names(scene.states, "states");
   check_unique_names(scene.transitions, "transitions");

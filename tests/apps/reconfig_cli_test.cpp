@@ -62,6 +62,38 @@ TEST(ReconfigCli, CheckBoxResolutionRoundsBoxesOutward) {
   EXPECT_EQ(run_reconfig("check " + bench_table() + " --box-resolution -1").exit_code, 2);
 }
 
+/// The scene's collision settings are the engine's, and each option given overrides its own.
+TEST(ReconfigCli, CheckUsesTheScenesCollisionSettingsUnlessOverridden) {
+  const fs::path dir = testing::fresh_temp_dir();
+  fs::copy(fs::path(bench_table()).parent_path() / "meshes", dir / "meshes", fs::copy_options::recursive);
+  nlohmann::json scene = nlohmann::json::parse(std::ifstream(bench_table()));
+  scene["collision"] = {{"tolerance", 0.004}, {"dop", 8}, {"box_resolution", 0}, {"conservative", true}};
+  std::ofstream(dir / "scene.json") << scene.dump(1);
+  const std::string check = "check " + (dir / "scene.json").string() + " --json --transition unfold";
+
+  const auto saved = run_reconfig(check);
+  ASSERT_EQ(saved.exit_code, 1) << saved.err;
+  const nlohmann::json used = nlohmann::json::parse(saved.out);
+  EXPECT_EQ(used["tolerance"], 0.004);
+  EXPECT_EQ(used["dop"], 8);
+  EXPECT_EQ(used["box_resolution"], 0);
+  EXPECT_EQ(used["conservative"], true);
+
+  const auto overridden = run_reconfig(check + " --dop 80 --no-conservative --tolerance 0.002");
+  ASSERT_EQ(overridden.exit_code, 1) << overridden.err;
+  const nlohmann::json over = nlohmann::json::parse(overridden.out);
+  EXPECT_EQ(over["tolerance"], 0.002);
+  EXPECT_EQ(over["dop"], 80);
+  EXPECT_EQ(over["box_resolution"], 0);  // not given: the scene's
+  EXPECT_EQ(over["conservative"], false);
+
+  // Without settings of its own, a scene gets the defaults.
+  const nlohmann::json plain = nlohmann::json::parse(run_reconfig("check " + bench_table() + " --json").out);
+  EXPECT_EQ(plain["tolerance"], 0.001);
+  EXPECT_EQ(plain["dop"], 28);
+  EXPECT_EQ(plain["conservative"], false);
+}
+
 TEST(ReconfigCli, CheckOfACollisionFreeTransitionExitsZero) {
   const auto run = run_reconfig("check " + bench_table() + " --transition unfold_lifted --samples 200");
   EXPECT_EQ(run.exit_code, 0) << run.err;

@@ -135,6 +135,8 @@ TEST(Edits, InvalidEditsAreRefusedAndLeaveTheSceneUntouched) {
   EXPECT_THROW(history.execute(scene, remove_key("nope", "lid", KeyKind::kRotation, 1)), InputError);
   EXPECT_THROW(history.execute(scene, set_state_pose("closed", "ghost", {})), InputError);
   EXPECT_THROW(history.execute(scene, replace_part_mesh("lid", {})), InputError);
+  EXPECT_THROW(history.execute(scene, set_collision_settings({.tolerance = -1e-3})), InputError);
+  EXPECT_THROW(history.execute(scene, set_collision_settings({.dop = 12})), InputError);
   EXPECT_FALSE(history.can_undo());
   EXPECT_EQ(scene_to_json(scene, "."), before);
 }
@@ -150,6 +152,23 @@ TEST(Edits, ReplaceMeshKeepsThePivotAndDirtiesEverything) {
   EXPECT_TRUE(std::holds_alternative<EditedMesh>(scene.parts[0].source));
   history.undo(scene);
   EXPECT_EQ(scene.parts[0].mesh.face_count(), 12);
+}
+
+TEST(Edits, CollisionSettingsAreSavedUndoneAndRedone) {
+  Reconfigurable scene = make_scene();
+  History history;
+  const CollisionSettings first{.tolerance = 2e-3, .dop = 8}, second{.box_resolution = 0.0, .conservative = true};
+  const DirtySet dirty = history.execute(scene, set_collision_settings(first));
+  EXPECT_TRUE(dirty.structure_changed);  // every transition is detected again
+  EXPECT_EQ(scene.collision, first);
+  history.execute(scene, set_collision_settings(second));
+  EXPECT_EQ(scene.collision, second);
+  EXPECT_TRUE(history.undo(scene).structure_changed);
+  EXPECT_EQ(scene.collision, first);
+  history.undo(scene);
+  EXPECT_TRUE(scene.collision.empty());
+  history.redo(scene);
+  EXPECT_EQ(scene.collision, first);
 }
 
 /// Random sequences of edits, undone one by one, give back the original exactly; redone, they

@@ -43,6 +43,13 @@ json valid_scene() {
     ]})");
 }
 
+/// `document` with collision settings of its own.
+json with_collision_settings(json document) {
+  document["collision"] = {
+      {"tolerance", 0.0005}, {"dop", 80}, {"box_resolution", 0}, {"frame", 0.04}, {"conservative", true}};
+  return document;
+}
+
 Reconfigurable parse(const json& document) { return parse_scene(document.dump(), fs::current_path(), "test.json"); }
 
 /// Parses `document` and returns the error's location, failing if it parses.
@@ -82,6 +89,23 @@ TEST(SceneFile, RoundTripIsLossless) {
     EXPECT_EQ(a.translation, b.translation) << t;
     EXPECT_EQ(a.rotation.coeffs(), b.rotation.coeffs()) << t;
   }
+}
+
+TEST(SceneFile, CollisionSettingsRoundTrip) {
+  const Reconfigurable scene = parse(with_collision_settings(valid_scene()));
+  const CollisionSettings expected{
+      .tolerance = 0.0005, .dop = 80, .box_resolution = 0.0, .frame = 0.04, .conservative = true};
+  EXPECT_EQ(scene.collision, expected);
+  const Reconfigurable again = parse_scene(scene_to_json(scene, fs::current_path()), fs::current_path(), "again.json");
+  EXPECT_EQ(again.collision, expected);
+
+  // Only the settings a design gives are written back; none, no "collision" object at all.
+  json partial = valid_scene();
+  partial["collision"] = {{"dop", 8}};
+  const Reconfigurable some = parse(partial);
+  EXPECT_EQ(some.collision, CollisionSettings{.dop = 8});
+  EXPECT_EQ(json::parse(scene_to_json(some, fs::current_path()))["collision"], partial["collision"]);
+  EXPECT_FALSE(json::parse(scene_to_json(parse(valid_scene()), fs::current_path())).contains("collision"));
 }
 
 TEST(SceneFile, SaveWritesAtomicallyAndKeepsMeshPathsRelative) {
@@ -182,6 +206,18 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"missing required field", [](json& d) { d["transitions"][0].erase("from"); },
                  "transitions[0].from", "missing required field"},
         BadInput{"wrong type", [](json& d) { d["parts"] = "lid"; }, "parts", "expected an array"},
+        BadInput{"misspelled collision setting", [](json& d) { d["collision"] = {{"tolerence", 0.001}}; },
+                 "collision.tolerence", "unknown field"},
+        BadInput{"zero tolerance", [](json& d) { d["collision"] = {{"tolerance", 0}}; }, "collision.tolerance",
+                 "positive distance"},
+        BadInput{"unknown k-DOP family", [](json& d) { d["collision"] = {{"dop", 26}}; }, "collision.dop", "8, 28 or 80"},
+        BadInput{"fractional k-DOP family", [](json& d) { d["collision"] = {{"dop", 28.5}}; }, "collision.dop",
+                 "8, 28 or 80"},
+        BadInput{"box grid above one", [](json& d) { d["collision"] = {{"box_resolution", 1.5}}; },
+                 "collision.box_resolution", "between 0"},
+        BadInput{"empty frame", [](json& d) { d["collision"] = {{"frame", 0}}; }, "collision.frame", "a frame must last"},
+        BadInput{"conservative as a number", [](json& d) { d["collision"] = {{"conservative", 1}}; },
+                 "collision.conservative", "expected"},
         BadInput{"unknown interpolation",
                  [](json& d) { d["transitions"][0]["tracks"]["lid"]["interpolation"] = "linear"; },
                  "transitions[0].tracks.lid.interpolation", "unknown interpolation"}),
@@ -199,6 +235,18 @@ TEST(SceneFile, MalformedJsonNamesLineAndColumn) {
   } catch (const InputError& error) {
     EXPECT_EQ(error.file(), "bad.json");
     EXPECT_NE(error.message().find("line 3"), std::string::npos) << error.what();
+  }
+}
+
+TEST(SceneFile, NumberTooLargeForADoubleIsAnInputError) {
+  std::string text = valid_scene().dump();
+  text.replace(text.find("0.45"), 4, "0.3e827");
+  try {
+    parse_scene(text, fs::current_path(), "huge.json");
+    FAIL() << "accepted a number beyond the range of a double";
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.file(), "huge.json");
+    EXPECT_NE(error.message().find("number overflow"), std::string::npos) << error.what();
   }
 }
 
@@ -230,7 +278,7 @@ TEST(SceneFile, NonManifoldMeshIsRejected) {
 
 /// Random mutations of a valid file: the loader either accepts it or throws InputError.
 TEST(SceneFile, FuzzedFilesNeverCrash) {
-  const std::string text = valid_scene().dump(1);
+  const std::string text = with_collision_settings(valid_scene()).dump(1);
   std::mt19937 random(7);
   int accepted = 0;
   for (int round = 0; round < 3000; ++round) {

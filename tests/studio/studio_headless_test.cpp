@@ -314,6 +314,33 @@ TEST_F(StudioHeadless, CollisionSettingsDetectAgainAndBadOnesAreRefused) {
   EXPECT_EQ(studio().detector_options().box_resolution, 0.0);
 }
 
+TEST_F(StudioHeadless, CollisionSettingsAreSavedWithTheDesignAndUndone) {
+  collision::DetectorOptions coarse = studio().detector_options();
+  coarse.tolerance = 4e-3;
+  coarse.frame = 0.05;
+  ASSERT_TRUE(studio().set_detector_options(coarse)) << studio().status();
+  EXPECT_TRUE(studio().document()->modified());
+  EXPECT_EQ(studio().document()->scene().collision.tolerance, 4e-3);
+  EXPECT_EQ(studio().document()->undo_label(), "change collision settings");
+
+  // Undo gives back the studio's settings (the design had none); redo the new ones.
+  ASSERT_TRUE(studio().undo());
+  EXPECT_TRUE(studio().document()->scene().collision.empty());
+  EXPECT_EQ(studio().detector_options().tolerance, collision::DetectorOptions{}.tolerance);
+  ASSERT_TRUE(studio().redo());
+  EXPECT_EQ(studio().detector_options().tolerance, 4e-3);
+  EXPECT_EQ(studio().detector_options().frame, 0.05);
+
+  // Saved, and back when the design is opened again, over the studio's own defaults.
+  ASSERT_TRUE(studio().save());
+  EXPECT_EQ(scene::load_scene(scene_file_).collision.tolerance, 4e-3);
+  ASSERT_TRUE(studio().open(scene_file_)) << studio().status();
+  EXPECT_EQ(studio().detector_options().tolerance, 4e-3);
+  EXPECT_EQ(studio().detector_options().frame, 0.05);
+  EXPECT_FALSE(studio().document()->modified());
+  ASSERT_TRUE(frontend_->run_until_collisions_current(milliseconds(60000)));
+}
+
 TEST_F(StudioHeadless, RefusedEditsLeaveTheDesignUntouched) {
   studio().select_part(studio().document()->scene().find_part("backrest"));
   studio().set_time(0.0);

@@ -52,4 +52,8 @@ std::unique_ptr<Command> set_pose_at(const Reconfigurable& scene, std::string tr
 /// Replaces a part's rest geometry; its pivot `center` is kept so poses keep their meaning.
 std::unique_ptr<Command> replace_part_mesh(std::string part, geometry::Mesh mesh);
 
+/// Replaces the design's collision settings (refused if `settings.problem()` names one).
+/// Every transition must then be detected again: the dirty set says the structure changed.
+std::unique_ptr<Command> set_collision_settings(CollisionSettings settings);
+
 }  // namespace reconfig::scene

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "reconfig/geometry/mesh.h"
+#include "reconfig/scene/collision_settings.h"
 #include "reconfig/scene/part.h"
 #include "reconfig/scene/state.h"
 #include "reconfig/scene/transition.h"
@@ -20,6 +21,8 @@ struct Reconfigurable {
   std::vector<Part> parts;
   std::vector<State> states;
   std::vector<Transition> transitions;
+  /// How its collisions are detected, as saved with it.
+  CollisionSettings collision;
 
   /// Index of the part / state / transition with that name, or -1.
   int find_part(const std::string& name) const;

@@ -17,7 +17,8 @@ struct PoseTolerance {
 /// Checks names are unique and non-empty, states and tracks name existing parts, transitions
 /// name existing states, every key time lies in [0, 1] and increases strictly, every
 /// quaternion is unit, every number finite, each track's first and last keys equal the poses
-/// of the transition's end states, and a part without a track has the same pose in both.
+/// of the transition's end states, a part without a track has the same pose in both, and the
+/// collision settings are usable.
 /// @throws InputError with the JSON path of the first problem (file left empty)
 void validate_scene(const Reconfigurable& scene, const PoseTolerance& tolerance = {});
 

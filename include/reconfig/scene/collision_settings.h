@@ -1,0 +1,32 @@
+#pragma once
+/// @file
+/// How a design asks for its collisions to be detected, saved with it (the scene file's
+/// optional "collision" object), so that the studio and `reconfig check` agree on them after
+/// it is reopened. Each setting left unset takes the detector's default.
+
+#include <optional>
+#include <string>
+
+namespace reconfig::scene {
+
+struct CollisionSettings {
+  /// Largest distance between the sampled and the true motion, in scene units (> 0).
+  std::optional<double> tolerance;
+  /// The k-DOP family of the spacetime hierarchies: 8, 28 or 80 half-spaces.
+  std::optional<int> dop;
+  /// Grid of the collision boxes, a fraction of the smaller part's size, in [0, 1] (0: exact).
+  std::optional<double> box_resolution;
+  /// Length of a frame, a fraction of a transition, in (0, 1].
+  std::optional<double> frame;
+  /// Also report near misses that the true motion may turn into collisions.
+  std::optional<bool> conservative;
+
+  bool empty() const { return !tolerance && !dop && !box_resolution && !frame && !conservative; }
+  /// These settings, each one replaced by `over`'s where that one is set.
+  CollisionSettings overridden_by(const CollisionSettings& over) const;
+  /// Why the settings cannot be used ("the tolerance must be a positive distance"), or "".
+  std::string problem() const;
+  bool operator==(const CollisionSettings&) const = default;
+};
+
+}  // namespace reconfig::scene

@@ -1,0 +1,25 @@
+#include "reconfig/collision/detector_settings.h"
+
+#include <cassert>
+
+namespace reconfig::collision {
+
+DetectorOptions with_settings(DetectorOptions base, const scene::CollisionSettings& settings) {
+  assert(settings.problem().empty());
+  if (settings.tolerance) base.tolerance = *settings.tolerance;
+  if (settings.dop) base.dop = dop_family(*settings.dop).value_or(base.dop);
+  if (settings.box_resolution) base.box_resolution = *settings.box_resolution;
+  if (settings.frame) base.frame = *settings.frame;
+  if (settings.conservative) base.conservative = *settings.conservative;
+  return base;
+}
+
+scene::CollisionSettings settings_of(const DetectorOptions& options) {
+  return {.tolerance = options.tolerance,
+          .dop = halfspace_count(options.dop),
+          .box_resolution = options.box_resolution,
+          .frame = options.frame,
+          .conservative = options.conservative};
+}
+
+}  // namespace reconfig::collision
