@@ -235,6 +235,10 @@ const scene::KeyframedTrack* keyframed_track(const scene::Reconfigurable& scene,
 
 }  // namespace
 
+const scene::KeyframedTrack* Studio::selected_keyframed_track() const {
+  return document_ ? keyframed_track(document_->scene(), active_transition_, selected_part_) : nullptr;
+}
+
 bool Studio::delete_selected_key() {
   if (!document_ || !selected_key_ || active_transition_ < 0 || selected_part_ < 0) return false;
   const scene::Reconfigurable& scene = document_->scene();

@@ -19,6 +19,7 @@
 
 #include "document.h"
 #include "gizmo.h"
+#include "handle_drag.h"
 #include "reconfig/render/render_target.h"
 #include "reconfig/render/renderer.h"
 #include "reconfig/scene/edits.h"
@@ -152,6 +153,10 @@ class Studio {
   void render_viewport_image(int width, int height);
   void handle_viewport_mouse(const ImVec2& origin, int width, int height);
   void draw_gizmo(ImDrawList* draw, const ImVec2& origin, int width, int height);
+  /// The handle being dragged at its new place, over the picture (which shows the old one).
+  void draw_handle_drag(ImDrawList* draw, const ImVec2& origin, int width, int height) const;
+  /// The selected part's keyframed track in the open transition, or null.
+  const scene::KeyframedTrack* selected_keyframed_track() const;
   view::Ray mouse_ray(const ImVec2& origin, int width, int height) const;
   int pick_part(const view::Ray& ray) const;
 
@@ -196,6 +201,7 @@ class Studio {
 
   // Interactions in progress.
   std::optional<GizmoDrag> gizmo_drag_;
+  std::optional<HandleDrag> handle_drag_;
   std::optional<motion::Pose> drag_preview_;
   std::optional<Gizmo> gizmo_;
   std::optional<KeyRef> key_drag_;

@@ -46,6 +46,7 @@ void Studio::draw_viewport() {
                {static_cast<float>(width), static_cast<float>(height)}, {0, 1}, {1, 0});
   if (document_) {
     draw_gizmo(ImGui::GetWindowDrawList(), origin, width, height);
+    draw_handle_drag(ImGui::GetWindowDrawList(), origin, width, height);
     const scene::Reconfigurable& scene = document_->scene();
     const std::string caption = active_transition_ >= 0
                                     ? fmt::format("{}   t = {:.3f}", scene.transitions[active_transition_].name, time_)
@@ -126,22 +127,21 @@ void Studio::render_viewport_image(int width, int height) {
       for (int i = 0; i <= 120; ++i)
         path.points.push_back(scene.pose_at(active_transition_, selected_part_, i / 120.0).translation + pivot);
       list.lines.push_back(std::move(path));
-      // Its translation keys and their Bézier handles (edited in the inspector).
-      const auto& tracks = scene.transitions[active_transition_].tracks;
-      const auto it = tracks.find(scene.parts[selected_part_].name);
-      if (const auto* keyed = it == tracks.end() ? nullptr : std::get_if<scene::KeyframedTrack>(&it->second)) {
+      // Its translation keys and the Bézier handles that shape the motion (dragged here, or
+      // edited in the inspector).
+      if (const scene::KeyframedTrack* keyed = selected_keyframed_track()) {
         render::LineItem handles;
         handles.strip = false;
         handles.color = {0.95f, 0.55f, 0.1f, 1.0f};
         const double tick = 0.01 * camera_.distance;
-        for (const motion::TranslationKey& key : keyed->translation) {
-          const Eigen::Vector3d point = pivot + key.point;
-          handles.points.insert(handles.points.end(), {point, pivot + key.in, point, pivot + key.out});
+        for (const HandleRef& handle : shaping_handles(keyed->translation))
+          handles.points.insert(handles.points.end(), {pivot + keyed->translation[handle.key].point,
+                                                       handle_end(keyed->translation, pivot, handle)});
+        for (const motion::TranslationKey& key : keyed->translation)
           for (int axis = 0; axis < 3; ++axis) {
-            handles.points.push_back(point - tick * Eigen::Vector3d::Unit(axis));
-            handles.points.push_back(point + tick * Eigen::Vector3d::Unit(axis));
+            handles.points.push_back(pivot + key.point - tick * Eigen::Vector3d::Unit(axis));
+            handles.points.push_back(pivot + key.point + tick * Eigen::Vector3d::Unit(axis));
           }
-        }
         list.lines.push_back(std::move(handles));
       }
     }
@@ -179,11 +179,31 @@ void Studio::handle_viewport_mouse(const ImVec2& origin, int width, int height) 
 
   if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
     const GizmoHandle handle = gizmo_ ? gizmo_->hit(camera_, width, height, mouse) : GizmoHandle::kNone;
+    const scene::KeyframedTrack* keyed = selected_keyframed_track();
+    const Eigen::Vector3d pivot = selected_part_ >= 0 ? document_->scene().parts[selected_part_].center : Eigen::Vector3d();
+    const std::optional<HandleRef> bezier =
+        keyed ? hit_handle(keyed->translation, pivot, camera_, width, height, mouse) : std::nullopt;
     if (handle != GizmoHandle::kNone && selected_pose()) {
       gizmo_drag_ = GizmoDrag{handle, gizmo_->center, *selected_pose(), ray};
+    } else if (bezier) {
+      handle_drag_ = HandleDrag{*bezier, keyed->translation[bezier->key], handle_end(keyed->translation, pivot, *bezier),
+                                camera_.forward(), ray};
+      selected_key_ = KeyRef{scene::KeyKind::kTranslation, bezier->key};
     } else {
       viewport_dragging_ = true;
     }
+  }
+  if (handle_drag_) {
+    if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
+      const motion::TranslationKey key = handle_drag_->key_for(ray);
+      const int index = handle_drag_->handle.key;
+      handle_drag_.reset();
+      const scene::Reconfigurable& scene = document_->scene();
+      if (io.MouseDragMaxDistanceSqr[0] > 4)  // a click on a handle only selects its key
+        execute(scene::set_translation_key(scene.transitions[active_transition_].name, scene.parts[selected_part_].name,
+                                           index, key));
+    }
+    return;
   }
   if (gizmo_drag_) {
     if (ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
@@ -247,6 +267,21 @@ void Studio::draw_gizmo(ImDrawList* draw, const ImVec2& origin, int width, int h
       }
     }
   }
+}
+
+void Studio::draw_handle_drag(ImDrawList* draw, const ImVec2& origin, int width, int height) const {
+  if (!handle_drag_) return;
+  const motion::TranslationKey key = handle_drag_->key_for(mouse_ray(origin, width, height));
+  const Eigen::Vector3d pivot = document_->scene().parts[selected_part_].center;
+  const auto from = view::project_to_pixel(camera_, width, height, pivot + key.point);
+  const auto to = view::project_to_pixel(camera_, width, height, pivot + (handle_drag_->handle.out ? key.out : key.in));
+  if (!from || !to) return;
+  const auto screen = [&](const view::Projection& p) {
+    return ImVec2(origin.x + static_cast<float>(p.pixel.x()), origin.y + static_cast<float>(p.pixel.y()));
+  };
+  const ImU32 orange = IM_COL32(242, 140, 25, 255);
+  draw->AddLine(screen(*from), screen(*to), orange, 2.0f);
+  draw->AddCircleFilled(screen(*to), 4.0f, orange);
 }
 
 }  // namespace reconfig::studio

@@ -174,14 +174,21 @@ KeyframedTrack holding_track(const motion::Pose& pose) {
 std::unique_ptr<Command> set_translation_key(std::string transition, std::string part, int key,
                                              motion::TranslationKey value) {
   std::string label = fmt::format("move translation key {} of {}", key, part);
-  return std::make_unique<PartEdit>(std::move(label), part, false,
-                                    [=](Reconfigurable& scene, int p) {
-                                      const int tr = transition_index(scene, transition);
-                                      auto& keys = keyframed(scene, tr, part).translation;
-                                      const auto [lo, hi] = inner_key_span(keys, key, value.time, "translation");
-                                      keys[key] = value;
-                                      return motion_changed(tr, p, lo, hi);
-                                    });
+  return std::make_unique<PartEdit>(std::move(label), part, false, [=](Reconfigurable& scene, int p) {
+    const int tr = transition_index(scene, transition);
+    auto& keys = keyframed(scene, tr, part).translation;
+    const int last = static_cast<int>(keys.size()) - 1;
+    const bool end = key >= 0 && key <= last && (key == 0 || key == last);
+    if (end && value.time == keys[key].time && value.point == keys[key].point) {
+      // The first and last keys' time and point follow the state poses; their handles do not.
+      keys[key].in = value.in;
+      keys[key].out = value.out;
+      return motion_changed(tr, p, key == 0 ? 0.0 : keys[key - 1].time, key == last ? 1.0 : keys[key + 1].time);
+    }
+    const auto [lo, hi] = inner_key_span(keys, key, value.time, "translation");
+    keys[key] = value;
+    return motion_changed(tr, p, lo, hi);
+  });
 }
 
 std::unique_ptr<Command> set_rotation_key(std::string transition, std::string part, int key, motion::RotationKey value) {

@@ -154,6 +154,35 @@ TEST(Edits, ReplaceMeshKeepsThePivotAndDirtiesEverything) {
   EXPECT_EQ(scene.parts[0].mesh.face_count(), 12);
 }
 
+TEST(Edits, EndKeysChangeTheirHandlesButNotTheirPoints) {
+  Reconfigurable scene = make_scene();
+  const std::string before = scene_to_json(scene, ".");
+  History history;
+  const auto keys = [&] { return std::get<KeyframedTrack>(scene.transitions[0].tracks.at("lid")).translation; };
+  motion::TranslationKey first = keys().front();
+  first.out = {0, 0.3, 0.5};
+  const DirtySet dirty = history.execute(scene, set_translation_key("unfold", "lid", 0, first));
+  ASSERT_EQ(dirty.ranges.size(), 1u);
+  EXPECT_EQ(dirty.ranges[0].t0, 0.0);  // the first segment, up to the next key
+  EXPECT_EQ(dirty.ranges[0].t1, 0.4);
+  EXPECT_EQ(keys().front().out, first.out);
+  EXPECT_TRUE(scene.pose_at(0, 0, 0.0).translation.isApprox(Eigen::Vector3d(0, 0, 0.45)));  // still the state's
+
+  motion::TranslationKey last = keys().back();
+  last.in = {0, 0.25, 0.7};
+  EXPECT_EQ(history.execute(scene, set_translation_key("unfold", "lid", 2, last)).ranges[0].t0, 0.4);
+  EXPECT_EQ(keys().back().in, last.in);
+
+  // Moving an end key's point, or its time, is still refused.
+  last.point.z() += 0.1;
+  EXPECT_THROW(history.execute(scene, set_translation_key("unfold", "lid", 2, last)), InputError);
+  first.time = 0.1;
+  EXPECT_THROW(history.execute(scene, set_translation_key("unfold", "lid", 0, first)), InputError);
+  history.undo(scene);
+  history.undo(scene);
+  EXPECT_EQ(scene_to_json(scene, "."), before);
+}
+
 TEST(Edits, CollisionSettingsAreSavedUndoneAndRedone) {
   Reconfigurable scene = make_scene();
   History history;

@@ -341,6 +341,53 @@ TEST_F(StudioHeadless, CollisionSettingsAreSavedWithTheDesignAndUndone) {
   ASSERT_TRUE(frontend_->run_until_collisions_current(milliseconds(60000)));
 }
 
+// Drag the out handle of the backrest's first translation key in the viewport: the motion
+// leaves its state another way (the key's point stays), as one undoable edit.
+TEST_F(StudioHeadless, DraggingABezierHandleReshapesThePath) {
+  const auto& scene = studio().document()->scene();
+  const int unfold = scene.find_transition("unfold");
+  click(*studio().graph_edge_point(unfold));
+  ASSERT_EQ(studio().active_transition(), unfold);
+  click(studio().timeline_point(0.5));
+  const int backrest = scene.find_part("backrest");
+  const auto on_backrest = visible_point(studio(), backrest);
+  ASSERT_TRUE(on_backrest);
+  click(*on_backrest);
+  ASSERT_EQ(studio().selected_part(), backrest);
+  const motion::TranslationKey before = track("backrest").translation.front();
+
+  const Eigen::Vector3d pivot = scene.parts[backrest].center;
+  const Eigen::Vector3d end = pivot + before.out;
+  input().mouse = *studio().viewport_point(end);
+  frontend_->run_frame();
+  input().buttons[0] = true;
+  frontend_->run_frame();
+  const Eigen::Vector3d shift(0, 0, 0.1);
+  for (int i = 1; i <= 6; ++i) {
+    input().mouse = *studio().viewport_point(end + shift * i / 6);
+    frontend_->run_frame();
+  }
+  input().buttons[0] = false;
+  frontend_->run_frame();
+
+  const motion::TranslationKey after = track("backrest").translation.front();
+  EXPECT_EQ(after.point, before.point);
+  EXPECT_EQ(after.in, before.in);
+  // The handle's end followed the mouse in the plane facing the camera: under the pixel it was
+  // dropped at, and the move seen on screen is the shift's.
+  const auto dropped = studio().viewport_point(pivot + after.out), expected = studio().viewport_point(end + shift);
+  EXPECT_NEAR(dropped->x, expected->x, 1.0);
+  EXPECT_NEAR(dropped->y, expected->y, 1.0);
+  EXPECT_GT((after.out - before.out).norm(), 0.05);
+  ASSERT_TRUE(studio().selected_key());
+  EXPECT_EQ(studio().selected_key()->index, 0);
+  EXPECT_TRUE(studio().document()->modified());
+  EXPECT_TRUE(studio().document()->scene().pose_at(unfold, backrest, 0.0).translation.isApprox(before.point));
+
+  press(keys::kZ, true);
+  EXPECT_EQ(track("backrest").translation.front().out, before.out);
+}
+
 TEST_F(StudioHeadless, RefusedEditsLeaveTheDesignUntouched) {
   studio().select_part(studio().document()->scene().find_part("backrest"));
   studio().set_time(0.0);

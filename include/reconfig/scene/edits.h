@@ -17,8 +17,8 @@ namespace reconfig::scene {
 enum class KeyKind { kTranslation, kRotation };
 
 /// Replaces translation key `key` of `part`'s track in `transition` (time, point, handles).
-/// Editing the first or last key of a track is refused: those follow the state poses (edit
-/// the state instead).
+/// The first and last keys of a track follow the state poses: of those only the handles may
+/// change (to move them, edit the state instead).
 std::unique_ptr<Command> set_translation_key(std::string transition, std::string part, int key,
                                              motion::TranslationKey value);
 
