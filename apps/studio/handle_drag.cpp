@@ -15,10 +15,8 @@ std::optional<Eigen::Vector3d> plane_crossing(const view::Ray& ray, const Eigen:
 
 }  // namespace
 
-Eigen::Vector3d handle_end(const std::vector<motion::TranslationKey>& keys, const Eigen::Vector3d& pivot,
-                           const HandleRef& handle) {
-  const motion::TranslationKey& key = keys[handle.key];
-  return pivot + (handle.out ? key.out : key.in);
+Eigen::Vector3d handle_end(const motion::TranslationKey& key, const Eigen::Vector3d& pivot, bool out) {
+  return pivot + (out ? key.out : key.in);
 }
 
 std::vector<HandleRef> shaping_handles(const std::vector<motion::TranslationKey>& keys) {
@@ -37,7 +35,7 @@ std::optional<HandleRef> hit_handle(const std::vector<motion::TranslationKey>& k
   std::optional<HandleRef> best;
   double best_distance = tolerance;
   for (const HandleRef& handle : shaping_handles(keys)) {
-    const auto projected = view::project_to_pixel(camera, width, height, handle_end(keys, pivot, handle));
+    const auto projected = view::project_to_pixel(camera, width, height, handle_end(keys[handle.key], pivot, handle.out));
     if (!projected) continue;
     const double distance = (projected->pixel - mouse).norm();
     if (distance <= best_distance) {

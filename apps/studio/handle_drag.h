@@ -22,9 +22,9 @@ struct HandleRef {
   bool operator==(const HandleRef&) const = default;
 };
 
-/// Where a handle's end is in the world: the part's pivot (rest center) plus the handle.
-Eigen::Vector3d handle_end(const std::vector<motion::TranslationKey>& keys, const Eigen::Vector3d& pivot,
-                           const HandleRef& handle);
+/// Where the end of a key's handle (`out` or in) is in the world: the part's pivot (rest
+/// center) plus the handle.
+Eigen::Vector3d handle_end(const motion::TranslationKey& key, const Eigen::Vector3d& pivot, bool out);
 
 /// The handles that shape the motion: every key's, but the first key's `in` and the last
 /// key's `out`.

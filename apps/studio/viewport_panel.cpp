@@ -134,9 +134,10 @@ void Studio::render_viewport_image(int width, int height) {
         handles.strip = false;
         handles.color = {0.95f, 0.55f, 0.1f, 1.0f};
         const double tick = 0.01 * camera_.distance;
-        for (const HandleRef& handle : shaping_handles(keyed->translation))
-          handles.points.insert(handles.points.end(), {pivot + keyed->translation[handle.key].point,
-                                                       handle_end(keyed->translation, pivot, handle)});
+        for (const HandleRef& handle : shaping_handles(keyed->translation)) {
+          const motion::TranslationKey& key = keyed->translation[handle.key];
+          handles.points.insert(handles.points.end(), {pivot + key.point, handle_end(key, pivot, handle.out)});
+        }
         for (const motion::TranslationKey& key : keyed->translation)
           for (int axis = 0; axis < 3; ++axis) {
             handles.points.push_back(pivot + key.point - tick * Eigen::Vector3d::Unit(axis));
@@ -180,14 +181,14 @@ void Studio::handle_viewport_mouse(const ImVec2& origin, int width, int height) 
   if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
     const GizmoHandle handle = gizmo_ ? gizmo_->hit(camera_, width, height, mouse) : GizmoHandle::kNone;
     const scene::KeyframedTrack* keyed = selected_keyframed_track();
-    const Eigen::Vector3d pivot = selected_part_ >= 0 ? document_->scene().parts[selected_part_].center : Eigen::Vector3d();
-    const std::optional<HandleRef> bezier =
-        keyed ? hit_handle(keyed->translation, pivot, camera_, width, height, mouse) : std::nullopt;
+    const Eigen::Vector3d pivot = keyed ? document_->scene().parts[selected_part_].center : Eigen::Vector3d();
+    std::optional<HandleRef> bezier;
+    if (handle == GizmoHandle::kNone && keyed) bezier = hit_handle(keyed->translation, pivot, camera_, width, height, mouse);
     if (handle != GizmoHandle::kNone && selected_pose()) {
       gizmo_drag_ = GizmoDrag{handle, gizmo_->center, *selected_pose(), ray};
     } else if (bezier) {
-      handle_drag_ = HandleDrag{*bezier, keyed->translation[bezier->key], handle_end(keyed->translation, pivot, *bezier),
-                                camera_.forward(), ray};
+      const motion::TranslationKey& key = keyed->translation[bezier->key];
+      handle_drag_ = HandleDrag{*bezier, key, handle_end(key, pivot, bezier->out), camera_.forward(), ray};
       selected_key_ = KeyRef{scene::KeyKind::kTranslation, bezier->key};
     } else {
       viewport_dragging_ = true;
@@ -274,7 +275,7 @@ void Studio::draw_handle_drag(ImDrawList* draw, const ImVec2& origin, int width,
   const motion::TranslationKey key = handle_drag_->key_for(mouse_ray(origin, width, height));
   const Eigen::Vector3d pivot = document_->scene().parts[selected_part_].center;
   const auto from = view::project_to_pixel(camera_, width, height, pivot + key.point);
-  const auto to = view::project_to_pixel(camera_, width, height, pivot + (handle_drag_->handle.out ? key.out : key.in));
+  const auto to = view::project_to_pixel(camera_, width, height, handle_end(key, pivot, handle_drag_->handle.out));
   if (!from || !to) return;
   const auto screen = [&](const view::Projection& p) {
     return ImVec2(origin.x + static_cast<float>(p.pixel.x()), origin.y + static_cast<float>(p.pixel.y()));

@@ -47,13 +47,13 @@ TEST(HandleDrag, TheHandleEndFollowsTheMouseInThePlaneFacingTheCamera) {
     const Eigen::Vector3d pivot = camera.target;
     const std::vector<HandleRef> handles = shaping_handles(keys);
     const HandleRef handle = handles[random() % handles.size()];
-    const Eigen::Vector3d end = handle_end(keys, pivot, handle);
+    const Eigen::Vector3d end = handle_end(keys[handle.key], pivot, handle.out);
     const auto at = view::project_to_pixel(camera, kWidth, kHeight, end);
     ASSERT_TRUE(at.has_value());
     // Another handle's end may be drawn at (nearly) the same pixel: then either is a fair hit.
     const auto hit = hit_handle(keys, pivot, camera, kWidth, kHeight, at->pixel);
     ASSERT_TRUE(hit.has_value());
-    const auto hit_at = view::project_to_pixel(camera, kWidth, kHeight, handle_end(keys, pivot, *hit));
+    const auto hit_at = view::project_to_pixel(camera, kWidth, kHeight, handle_end(keys[hit->key], pivot, hit->out));
     EXPECT_LE((hit_at->pixel - at->pixel).norm(), 1e-6 + (hit == handle ? 0 : 7));
     EXPECT_FALSE(hit_handle(keys, pivot, camera, kWidth, kHeight, Eigen::Vector2d(-100, -100)).has_value());
 
