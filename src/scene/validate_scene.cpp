@@ -18,34 +18,37 @@ std::string format_quaternion(const Eigen::Quaterniond& q) {
   return fmt::format("[{:.6g}, {:.6g}, {:.6g}, {:.6g}]", q.w(), q.x(), q.y(), q.z());
 }
 
+// The checks below run on every edit, over the whole design: they take the JSON path of what
+// they check as a function (`path_of()`), which formats it only if the check fails.
+
 template <typename Named>
 void check_unique_names(const std::vector<Named>& items, const std::string& list) {
   std::set<std::string> seen;
   for (std::size_t i = 0; i < items.size(); ++i) {
-    const std::string path = fmt::format("{}[{}].name", list, i);
-    if (items[i].name.empty()) fail(path, "name must not be empty");
-    if (!seen.insert(items[i].name).second) fail(path, fmt::format("duplicate name \"{}\"", items[i].name));
+    const auto path = [&] { return fmt::format("{}[{}].name", list, i); };
+    if (items[i].name.empty()) fail(path(), "name must not be empty");
+    if (!seen.insert(items[i].name).second) fail(path(), fmt::format("duplicate name \"{}\"", items[i].name));
   }
 }
 
-void check_finite(const Eigen::Vector3d& v, const std::string& path) {
-  if (!v.allFinite()) fail(path, "coordinates must be finite numbers");
+void check_finite(const Eigen::Vector3d& v, const auto& path_of) {
+  if (!v.allFinite()) fail(path_of(), "coordinates must be finite numbers");
 }
 
-void check_unit(const Eigen::Quaterniond& q, const std::string& path) {
+void check_unit(const Eigen::Quaterniond& q, const auto& path_of) {
   if (!q.coeffs().allFinite() || std::abs(q.norm() - 1.0) > 1e-3)
-    fail(path, fmt::format("quaternion must have unit length, found length {:.6g}", q.norm()));
+    fail(path_of(), fmt::format("quaternion must have unit length, found length {:.6g}", q.norm()));
 }
 
 /// Key times must lie in [0, 1] and strictly increase.
 template <typename Key>
-void check_times(const std::vector<Key>& keys, const std::string& list) {
+void check_times(const std::vector<Key>& keys, const auto& list_of) {
   for (std::size_t k = 0; k < keys.size(); ++k) {
-    const std::string path = fmt::format("{}[{}].time", list, k);
+    const auto path = [&] { return fmt::format("{}[{}].time", list_of(), k); };
     const double t = keys[k].time;
-    if (!std::isfinite(t) || t < 0 || t > 1) fail(path, fmt::format("key time {} must lie in [0, 1]", t));
+    if (!std::isfinite(t) || t < 0 || t > 1) fail(path(), fmt::format("key time {} must lie in [0, 1]", t));
     if (k > 0 && !(t > keys[k - 1].time))
-      fail(path, fmt::format("keyframe times must strictly increase ({} follows {})", t, keys[k - 1].time));
+      fail(path(), fmt::format("keyframe times must strictly increase ({} follows {})", t, keys[k - 1].time));
   }
 }
 
@@ -55,77 +58,77 @@ std::string mismatch(const char* which, const std::string& what, const std::stri
                      state, expected);
 }
 
-void check_translation_end(const motion::TranslationKey& key, const motion::Pose& pose, const char* which,
-                           const std::string& path, const std::string& part, const std::string& state,
+void check_translation_end(const Eigen::Vector3d& point, const motion::Pose& pose, const char* which,
+                           const auto& path_of, const std::string& part, const std::string& state,
                            const PoseTolerance& tolerance) {
-  if ((key.point - pose.translation).norm() > tolerance.translation)
-    fail(path + ".point", mismatch(which, format_vector(key.point), part, state, format_vector(pose.translation)));
+  if ((point - pose.translation).norm() > tolerance.translation)
+    fail(path_of(), mismatch(which, format_vector(point), part, state, format_vector(pose.translation)));
 }
 
 void check_rotation_end(const Eigen::Quaterniond& q, const motion::Pose& pose, const char* which,
-                        const std::string& path, const std::string& part, const std::string& state,
+                        const auto& path_of, const std::string& part, const std::string& state,
                         const PoseTolerance& tolerance) {
   if (q.angularDistance(pose.rotation) > tolerance.rotation)
-    fail(path, mismatch(which, format_quaternion(q), part, state, format_quaternion(pose.rotation)));
+    fail(path_of(), mismatch(which, format_quaternion(q), part, state, format_quaternion(pose.rotation)));
 }
 
-void check_track(const Track& track, const std::string& path, const std::string& part, const State& from,
+/// `path_of()`: the track's JSON path.
+void check_track(const Track& track, const auto& path_of, const std::string& part, const State& from,
                  const State& to, const PoseTolerance& tolerance) {
   const motion::Pose first = from.pose_of(part);
   const motion::Pose last = to.pose_of(part);
   if (const auto* screw = std::get_if<ScrewPosesTrack>(&track)) {
-    const std::string list = path + ".poses";
-    if (screw->poses.empty()) fail(list, "a screw track needs at least one key pose");
+    const auto list = [&] { return path_of() + ".poses"; };
+    if (screw->poses.empty()) fail(list(), "a screw track needs at least one key pose");
     check_times(screw->poses, list);
     for (std::size_t k = 0; k < screw->poses.size(); ++k) {
-      check_finite(screw->poses[k].pose.translation, fmt::format("{}[{}].translation", list, k));
-      check_unit(screw->poses[k].pose.rotation, fmt::format("{}[{}].rotation", list, k));
+      check_finite(screw->poses[k].pose.translation, [&] { return fmt::format("{}[{}].translation", list(), k); });
+      check_unit(screw->poses[k].pose.rotation, [&] { return fmt::format("{}[{}].rotation", list(), k); });
     }
     const std::size_t n = screw->poses.size() - 1;
     for (const auto& [key, pose, state, which] :
          {std::tuple{std::size_t{0}, first, &from, "first"}, std::tuple{n, last, &to, "last"}}) {
       const motion::Pose& p = screw->poses[key].pose;
-      const std::string at = fmt::format("{}[{}]", list, key);
-      if ((p.translation - pose.translation).norm() > tolerance.translation)
-        fail(at + ".translation", mismatch(which, format_vector(p.translation), part, state->name,
-                                           format_vector(pose.translation)));
-      check_rotation_end(p.rotation, pose, which, at + ".rotation", part, state->name, tolerance);
+      const auto at = [&](const char* field) { return fmt::format("{}[{}].{}", list(), key, field); };
+      check_translation_end(p.translation, pose, which, [&] { return at("translation"); }, part, state->name, tolerance);
+      check_rotation_end(p.rotation, pose, which, [&] { return at("rotation"); }, part, state->name, tolerance);
     }
     return;
   }
   const auto& keyed = std::get<KeyframedTrack>(track);
-  const std::string translation = path + ".translation";
-  const std::string rotation = path + ".rotation";
+  const auto translation = [&] { return path_of() + ".translation"; };
+  const auto rotation = [&] { return path_of() + ".rotation"; };
   check_times(keyed.translation, translation);
   check_times(keyed.rotation, rotation);
   for (std::size_t k = 0; k < keyed.translation.size(); ++k) {
     const auto& key = keyed.translation[k];
     for (const auto& [v, field] : {std::pair{key.point, "point"}, std::pair{key.in, "in"}, std::pair{key.out, "out"}})
-      check_finite(v, fmt::format("{}[{}].{}", translation, k, field));
+      check_finite(v, [&] { return fmt::format("{}[{}].{}", translation(), k, field); });
   }
   for (std::size_t k = 0; k < keyed.rotation.size(); ++k)
-    check_unit(keyed.rotation[k].rotation, fmt::format("{}[{}].quaternion", rotation, k));
+    check_unit(keyed.rotation[k].rotation, [&] { return fmt::format("{}[{}].quaternion", rotation(), k); });
 
   if (keyed.translation.empty()) {
     if ((first.translation - last.translation).norm() > tolerance.translation)
-      fail(path, fmt::format("part \"{}\" has no translation keys but its position differs between states \"{}\" "
-                             "and \"{}\"", part, from.name, to.name));
+      fail(path_of(), fmt::format("part \"{}\" has no translation keys but its position differs between states \"{}\" "
+                                  "and \"{}\"", part, from.name, to.name));
   } else {
     const std::size_t n = keyed.translation.size() - 1;
-    check_translation_end(keyed.translation.front(), first, "first", translation + "[0]", part, from.name, tolerance);
-    check_translation_end(keyed.translation.back(), last, "last", fmt::format("{}[{}]", translation, n), part,
-                          to.name, tolerance);
+    check_translation_end(keyed.translation.front().point, first, "first", [&] { return translation() + "[0].point"; },
+                          part, from.name, tolerance);
+    check_translation_end(keyed.translation.back().point, last, "last",
+                          [&] { return fmt::format("{}[{}].point", translation(), n); }, part, to.name, tolerance);
   }
   if (keyed.rotation.empty()) {
     if (first.rotation.angularDistance(last.rotation) > tolerance.rotation)
-      fail(path, fmt::format("part \"{}\" has no rotation keys but its rotation differs between states \"{}\" "
-                             "and \"{}\"", part, from.name, to.name));
+      fail(path_of(), fmt::format("part \"{}\" has no rotation keys but its rotation differs between states \"{}\" "
+                                  "and \"{}\"", part, from.name, to.name));
   } else {
     const std::size_t n = keyed.rotation.size() - 1;
-    check_rotation_end(keyed.rotation.front().rotation, first, "first", rotation + "[0].quaternion", part, from.name,
-                       tolerance);
-    check_rotation_end(keyed.rotation.back().rotation, last, "last", fmt::format("{}[{}].quaternion", rotation, n),
-                       part, to.name, tolerance);
+    check_rotation_end(keyed.rotation.front().rotation, first, "first", [&] { return rotation() + "[0].quaternion"; },
+                       part, from.name, tolerance);
+    check_rotation_end(keyed.rotation.back().rotation, last, "last",
+                       [&] { return fmt::format("{}[{}].quaternion", rotation(), n); }, part, to.name, tolerance);
   }
 }
 
@@ -145,44 +148,45 @@ void validate_scene(const Reconfigurable& scene, const PoseTolerance& tolerance)
   for (std::size_t i = 0; i < scene.parts.size(); ++i) {
     const Part& part = scene.parts[i];
     if (part.mesh.empty()) fail(fmt::format("parts[{}]", i), fmt::format("part \"{}\" has no triangles", part.name));
-    check_finite(part.center, fmt::format("parts[{}].center", i));
+    check_finite(part.center, [&] { return fmt::format("parts[{}].center", i); });
   }
   if (scene.states.empty() && !scene.transitions.empty()) fail("states", "transitions need states");
   for (std::size_t i = 0; i < scene.states.size(); ++i) {
     for (const auto& [name, pose] : scene.states[i].poses) {
-      const std::string path = fmt::format("states[{}].poses.{}", i, name);
-      if (scene.find_part(name) < 0) fail(path, fmt::format("unknown part \"{}\"", name));
-      check_finite(pose.translation, path + ".translation");
-      check_unit(pose.rotation, path + ".rotation");
+      const auto path = [&] { return fmt::format("states[{}].poses.{}", i, name); };
+      if (scene.find_part(name) < 0) fail(path(), fmt::format("unknown part \"{}\"", name));
+      check_finite(pose.translation, [&] { return path() + ".translation"; });
+      check_unit(pose.rotation, [&] { return path() + ".rotation"; });
     }
   }
   for (std::size_t i = 0; i < scene.transitions.size(); ++i) {
     const Transition& transition = scene.transitions[i];
-    const std::string path = fmt::format("transitions[{}]", i);
+    const auto path_of = [&] { return fmt::format("transitions[{}]", i); };
     const int from = scene.find_state(transition.from);
     const int to = scene.find_state(transition.to);
-    if (from < 0) fail(path + ".from", fmt::format("unknown state \"{}\"", transition.from));
-    if (to < 0) fail(path + ".to", fmt::format("unknown state \"{}\"", transition.to));
+    if (from < 0) fail(path_of() + ".from", fmt::format("unknown state \"{}\"", transition.from));
+    if (to < 0) fail(path_of() + ".to", fmt::format("unknown state \"{}\"", transition.to));
     if (transition.linkage) {
       for (std::size_t k = 0; k < transition.linkage->attach.size(); ++k) {
         const std::string& name = transition.linkage->attach[k].part;
         if (scene.find_part(name) < 0)
-          fail(fmt::format("{}.linkage.attach[{}].part", path, k), fmt::format("unknown part \"{}\"", name));
+          fail(fmt::format("{}.linkage.attach[{}].part", path_of(), k), fmt::format("unknown part \"{}\"", name));
       }
       if (const std::string part = edited_driven_part(transition); !part.empty())
-        fail(fmt::format("{}.tracks.{}", path, part),
+        fail(fmt::format("{}.tracks.{}", path_of(), part),
              fmt::format("part \"{}\" is driven by the linkage of transition \"{}\": edit the drive (and compile "
                          "it again), not the part's track", part, transition.name));
     }
     for (const auto& [name, track] : transition.tracks)
-      if (scene.find_part(name) < 0) fail(fmt::format("{}.tracks.{}", path, name), fmt::format("unknown part \"{}\"", name));
+      if (scene.find_part(name) < 0)
+        fail(fmt::format("{}.tracks.{}", path_of(), name), fmt::format("unknown part \"{}\"", name));
     for (const Part& part : scene.parts) {
       const auto track = transition.tracks.find(part.name);
       if (track != transition.tracks.end()) {
-        check_track(track->second, fmt::format("{}.tracks.{}", path, part.name), part.name, scene.states[from],
-                    scene.states[to], tolerance);
+        check_track(track->second, [&] { return fmt::format("{}.tracks.{}", path_of(), part.name); }, part.name,
+                    scene.states[from], scene.states[to], tolerance);
       } else if (!poses_match(scene.states[from].pose_of(part.name), scene.states[to].pose_of(part.name), tolerance)) {
-        fail(path + ".tracks", fmt::format("part \"{}\" has no track but its pose differs between states \"{}\" and "
+        fail(path_of() + ".tracks", fmt::format("part \"{}\" has no track but its pose differs between states \"{}\" and "
                                            "\"{}\"", part.name, transition.from, transition.to));
       }
     }
