@@ -215,6 +215,8 @@ class Runner {
       drag_gizmo(args[0], number(args, 1, "amount (world units or degrees)"));
     } else if (action == "drag-key") {
       drag_key(args);
+    } else if (action == "drag-handle") {
+      drag_handle(args);
     } else if (action == "expect-collisions") {
       const auto& collisions = current_collisions();
       const int expected = static_cast<int>(number(args, 0, "interval count"));
@@ -298,17 +300,38 @@ class Runner {
     if (!translation && args[0] != "rotation") fail("drag-key: the row is translation or rotation");
     const int index = static_cast<int>(number(args, 1, "key index"));
     const double to = number(args, 2, "time");
-    const int part = studio().selected_part(), transition = studio().active_transition();
-    if (part < 0 || transition < 0) fail("drag-key needs a selected part and an open transition");
-    const auto& tracks = scene().transitions[transition].tracks;
-    const auto it = tracks.find(scene().parts[part].name);
-    const auto* track = it == tracks.end() ? nullptr : std::get_if<scene::KeyframedTrack>(&it->second);
-    if (!track) fail("the selected part has no keyframed track here");
+    const scene::KeyframedTrack* track = selected_track("drag-key");
     const int count = static_cast<int>(translation ? track->translation.size() : track->rotation.size());
     if (index < 0 || index >= count) fail(fmt::format("no key {} (the row has {})", index, count));
     const double from = translation ? track->translation[index].time : track->rotation[index].time;
     const float y = translation ? studio().layout().translation_row_y : studio().layout().rotation_row_y;
     drag_through(frontend_, segment({studio().timeline_point(from).x, y}, {studio().timeline_point(to).x, y}, 8));
+  }
+
+  /// Drags the end of the in or out handle of a translation key of the selected part by a
+  /// world offset, as drawn: from where the end is drawn to where end + offset is.
+  void drag_handle(const std::vector<std::string>& args) {
+    if (args.size() < 5) fail("drag-handle needs: INDEX in|out DX DY DZ");
+    const int index = static_cast<int>(number(args, 0, "key index"));
+    if (args[1] != "in" && args[1] != "out") fail("drag-handle: the handle is in or out");
+    const Eigen::Vector3d offset(number(args, 2, "dx"), number(args, 3, "dy"), number(args, 4, "dz"));
+    const scene::KeyframedTrack* track = selected_track("drag-handle");
+    const int count = static_cast<int>(track->translation.size());
+    if (index < 0 || index >= count) fail(fmt::format("no translation key {} (the track has {})", index, count));
+    const Eigen::Vector3d end =
+        handle_end(track->translation[index], scene().parts[studio().selected_part()].center, args[1] == "out");
+    const auto a = studio().viewport_point(end), b = studio().viewport_point(end + offset);
+    if (!a || !b) fail("the handle is off screen");
+    drag_through(frontend_, segment(*a, *b, 8));
+  }
+
+  /// The selected part's keyframed track in the open transition (`action` needs one).
+  const scene::KeyframedTrack* selected_track(const char* action) {
+    if (studio().selected_part() < 0 || studio().active_transition() < 0)
+      fail(fmt::format("{} needs a selected part and an open transition", action));
+    const scene::KeyframedTrack* track = studio().selected_keyframed_track();
+    if (!track) fail("the selected part has no keyframed track here");
+    return track;
   }
 
   HeadlessFrontend& frontend_;

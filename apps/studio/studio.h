@@ -123,6 +123,8 @@ class Studio {
   std::shared_ptr<const collision::CollisionSnapshot> collisions() const;
   /// The selected part's pose at the current time.
   std::optional<motion::Pose> selected_pose() const;
+  /// The selected part's keyframed track in the open transition, or null.
+  const scene::KeyframedTrack* selected_keyframed_track() const;
   /// The gizmo as drawn this frame (for the selected part), if any.
   std::optional<Gizmo> gizmo() const { return gizmo_; }
   /// Screen position of time t on the scrub strip.
@@ -155,8 +157,6 @@ class Studio {
   void draw_gizmo(ImDrawList* draw, const ImVec2& origin, int width, int height);
   /// The handle being dragged at its new place, over the picture (which shows the old one).
   void draw_handle_drag(ImDrawList* draw, const ImVec2& origin, int width, int height) const;
-  /// The selected part's keyframed track in the open transition, or null.
-  const scene::KeyframedTrack* selected_keyframed_track() const;
   view::Ray mouse_ray(const ImVec2& origin, int width, int height) const;
   int pick_part(const view::Ray& ray) const;
 

@@ -7,6 +7,7 @@
 
 #include "keys.h"
 #include "reconfig/scene/scene_file.h"
+#include "script.h"
 #include "studio_test_util.h"
 
 namespace reconfig::studio {
@@ -386,6 +387,13 @@ TEST_F(StudioHeadless, DraggingABezierHandleReshapesThePath) {
 
   press(keys::kZ, true);
   EXPECT_EQ(track("backrest").translation.front().out, before.out);
+
+  // The same drag, scripted.
+  run_script(*frontend_, "drag-handle 0 out 0 0 0.1\n", "handles.txt");
+  EXPECT_EQ(track("backrest").translation.front().point, before.point);
+  EXPECT_NEAR((track("backrest").translation.front().out - after.out).norm(), 0, 1e-3);
+  EXPECT_THROW(run_script(*frontend_, "drag-handle 7 out 0 0 0.1\n", "handles.txt"), ScriptError);
+  EXPECT_THROW(run_script(*frontend_, "drag-handle 0 sideways 0 0 0.1\n", "handles.txt"), ScriptError);
 }
 
 TEST_F(StudioHeadless, RefusedEditsLeaveTheDesignUntouched) {
