@@ -66,9 +66,7 @@ void Studio::draw_inspector() {
 
   // The selected key, with its Bézier handles.
   if (selected_key_ && active_transition_ >= 0 && selected_part_ >= 0) {
-    const auto& tracks = scene.transitions[active_transition_].tracks;
-    const auto it = tracks.find(scene.parts[selected_part_].name);
-    const auto* track = it == tracks.end() ? nullptr : std::get_if<scene::KeyframedTrack>(&it->second);
+    const scene::KeyframedTrack* track = selected_keyframed_track();
     const std::string& transition = scene.transitions[active_transition_].name;
     const std::string& part = scene.parts[selected_part_].name;
     ImGui::Separator();

@@ -224,19 +224,12 @@ bool Studio::insert_key() {
   return apply_pose(*pose);
 }
 
-namespace {
-
-const scene::KeyframedTrack* keyframed_track(const scene::Reconfigurable& scene, int transition, int part) {
-  if (transition < 0 || part < 0) return nullptr;
-  const auto& tracks = scene.transitions[transition].tracks;
-  const auto it = tracks.find(scene.parts[part].name);
-  return it == tracks.end() ? nullptr : std::get_if<scene::KeyframedTrack>(&it->second);
-}
-
-}  // namespace
-
 const scene::KeyframedTrack* Studio::selected_keyframed_track() const {
-  return document_ ? keyframed_track(document_->scene(), active_transition_, selected_part_) : nullptr;
+  if (!document_ || active_transition_ < 0 || selected_part_ < 0) return nullptr;
+  const scene::Reconfigurable& scene = document_->scene();
+  const auto& tracks = scene.transitions[active_transition_].tracks;
+  const auto it = tracks.find(scene.parts[selected_part_].name);
+  return it == tracks.end() ? nullptr : std::get_if<scene::KeyframedTrack>(&it->second);
 }
 
 bool Studio::delete_selected_key() {
@@ -252,7 +245,7 @@ bool Studio::delete_selected_key() {
 bool Studio::move_key_time(KeyRef key, double t) {
   if (!document_ || active_transition_ < 0 || selected_part_ < 0) return false;
   const scene::Reconfigurable& scene = document_->scene();
-  const auto* track = keyframed_track(scene, active_transition_, selected_part_);
+  const scene::KeyframedTrack* track = selected_keyframed_track();
   if (!track) return false;
   const std::string& transition = scene.transitions[active_transition_].name;
   const std::string& part = scene.parts[selected_part_].name;
