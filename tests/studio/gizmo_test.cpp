@@ -4,6 +4,8 @@
 
 #include <random>
 
+#include "random_camera.h"
+
 namespace reconfig::studio {
 namespace {
 
@@ -13,16 +15,6 @@ view::Ray ray_through(const view::Camera& camera, const Eigen::Vector3d& point) 
   const auto pixel = view::project_to_pixel(camera, kWidth, kHeight, point);
   EXPECT_TRUE(pixel.has_value());
   return view::ray_from_pixel(camera, kWidth, kHeight, pixel->pixel.x(), pixel->pixel.y());
-}
-
-view::Camera random_camera(std::mt19937& random) {
-  std::uniform_real_distribution<double> u(-1, 1);
-  view::Camera camera;
-  camera.target = Eigen::Vector3d(u(random), u(random), u(random));
-  camera.distance = 3 + 2 * u(random);
-  camera.yaw = 3 * u(random);
-  camera.pitch = 0.2 + 0.5 * u(random);
-  return camera;
 }
 
 // Oracle: dragging the mouse from one point of an axis to another point of it moves the part

@@ -4,20 +4,12 @@
 
 #include <random>
 
+#include "random_camera.h"
+
 namespace reconfig::studio {
 namespace {
 
 constexpr int kWidth = 800, kHeight = 600;
-
-view::Camera random_camera(std::mt19937& random) {
-  std::uniform_real_distribution<double> u(-1, 1);
-  view::Camera camera;
-  camera.target = Eigen::Vector3d(u(random), u(random), u(random));
-  camera.distance = 3 + 2 * u(random);
-  camera.yaw = 3 * u(random);
-  camera.pitch = 0.2 + 0.5 * u(random);
-  return camera;
-}
 
 std::vector<motion::TranslationKey> random_keys(std::mt19937& random, int n) {
   std::uniform_real_distribution<double> u(-0.4, 0.4);
