@@ -245,8 +245,9 @@ void Studio::draw_gizmo(ImDrawList* draw, const ImVec2& origin, int width, int h
   gizmo_ = Gizmo::sized_for(camera_, height, gizmo_drag_ ? gizmo_drag_->center : pivot);
   const ImGuiIO& io = ImGui::GetIO();
   const GizmoHandle hovered =
-      gizmo_drag_ ? gizmo_drag_->handle
-                  : gizmo_->hit(camera_, width, height, {io.MousePos.x - origin.x, io.MousePos.y - origin.y});
+      gizmo_drag_    ? gizmo_drag_->handle
+      : handle_drag_ ? GizmoHandle::kNone  // a Bézier handle has the mouse
+                     : gizmo_->hit(camera_, width, height, {io.MousePos.x - origin.x, io.MousePos.y - origin.y});
   for (const GizmoHandle handle : {GizmoHandle::kRotateX, GizmoHandle::kRotateY, GizmoHandle::kRotateZ,
                                    GizmoHandle::kMoveX, GizmoHandle::kMoveY, GizmoHandle::kMoveZ}) {
     std::vector<ImVec2> points;
@@ -271,18 +272,27 @@ void Studio::draw_gizmo(ImDrawList* draw, const ImVec2& origin, int width, int h
 }
 
 void Studio::draw_handle_drag(ImDrawList* draw, const ImVec2& origin, int width, int height) const {
-  if (!handle_drag_) return;
-  const motion::TranslationKey key = handle_drag_->key_for(mouse_ray(origin, width, height));
+  const scene::KeyframedTrack* keyed = handle_drag_ ? selected_keyframed_track() : nullptr;
+  if (!keyed) return;
+  std::vector<motion::TranslationKey> keys = keyed->translation;
+  const motion::TranslationKey& key = keys[handle_drag_->handle.key] = handle_drag_->key_for(mouse_ray(origin, width, height));
   const Eigen::Vector3d pivot = document_->scene().parts[selected_part_].center;
-  const auto from = view::project_to_pixel(camera_, width, height, pivot + key.point);
-  const auto to = view::project_to_pixel(camera_, width, height, handle_end(key, pivot, handle_drag_->handle.out));
-  if (!from || !to) return;
-  const auto screen = [&](const view::Projection& p) {
-    return ImVec2(origin.x + static_cast<float>(p.pixel.x()), origin.y + static_cast<float>(p.pixel.y()));
+  const auto screen = [&](const Eigen::Vector3d& point) -> std::optional<ImVec2> {
+    const auto p = view::project_to_pixel(camera_, width, height, point);
+    if (!p) return std::nullopt;
+    return ImVec2(origin.x + static_cast<float>(p->pixel.x()), origin.y + static_cast<float>(p->pixel.y()));
   };
-  const ImU32 orange = IM_COL32(242, 140, 25, 255);
-  draw->AddLine(screen(*from), screen(*to), orange, 2.0f);
-  draw->AddCircleFilled(screen(*to), 4.0f, orange);
+  // The path as it would become (the picture under it still shows the old one), and the handle.
+  const ImU32 blue = IM_COL32(40, 90, 220, 255), orange = IM_COL32(242, 140, 25, 255);
+  const motion::BezierTranslationTrack path(keys);
+  std::vector<ImVec2> points;
+  for (int i = 0; i <= 120; ++i)
+    if (const auto point = screen(pivot + path.evaluate(i / 120.0))) points.push_back(*point);
+  if (points.size() > 1) draw->AddPolyline(points.data(), static_cast<int>(points.size()), blue, 0, 2.0f);
+  const auto from = screen(pivot + key.point), to = screen(handle_end(key, pivot, handle_drag_->handle.out));
+  if (!from || !to) return;
+  draw->AddLine(*from, *to, orange, 2.0f);
+  draw->AddCircleFilled(*to, 4.0f, orange);
 }
 
 }  // namespace reconfig::studio
