@@ -9,17 +9,19 @@
 
 namespace reconfig::scene {
 
+/// (The members' explicit initializers let `{.dop = 8}` leave the others unset without a
+/// -Wmissing-field-initializers warning.)
 struct CollisionSettings {
   /// Largest distance between the sampled and the true motion, in scene units (> 0).
-  std::optional<double> tolerance;
+  std::optional<double> tolerance = std::nullopt;
   /// The k-DOP family of the spacetime hierarchies: 8, 28 or 80 half-spaces.
-  std::optional<int> dop;
+  std::optional<int> dop = std::nullopt;
   /// Grid of the collision boxes, a fraction of the smaller part's size, in [0, 1] (0: exact).
-  std::optional<double> box_resolution;
+  std::optional<double> box_resolution = std::nullopt;
   /// Length of a frame, a fraction of a transition, in (0, 1].
-  std::optional<double> frame;
+  std::optional<double> frame = std::nullopt;
   /// Also report near misses that the true motion may turn into collisions.
-  std::optional<bool> conservative;
+  std::optional<bool> conservative = std::nullopt;
 
   bool empty() const { return !tolerance && !dop && !box_resolution && !frame && !conservative; }
   /// These settings, each one replaced by `over`'s where that one is set.
