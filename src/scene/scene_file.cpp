@@ -241,8 +241,9 @@ CollisionSettings read_collision_settings(const JsonCursor& c) {
   CollisionSettings settings;
   if (c.has("tolerance")) settings.tolerance = c["tolerance"].as_number();
   if (c.has("dop")) {
-    if (!c["dop"].value().is_number_integer()) c["dop"].fail("expected 8, 28 or 80");
-    settings.dop = c["dop"].value().get<int>();
+    const nlohmann::json& dop = c["dop"].value();  // compared as a number, so 2^32 + 28 is no 28
+    if (!dop.is_number_integer() || (dop != 8 && dop != 28 && dop != 80)) c["dop"].fail("expected 8, 28 or 80");
+    settings.dop = dop.get<int>();
   }
   if (c.has("box_resolution")) settings.box_resolution = c["box_resolution"].as_number();
   if (c.has("frame")) settings.frame = c["frame"].as_number();

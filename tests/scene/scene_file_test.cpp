@@ -211,6 +211,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"zero tolerance", [](json& d) { d["collision"] = {{"tolerance", 0}}; }, "collision.tolerance",
                  "positive distance"},
         BadInput{"unknown k-DOP family", [](json& d) { d["collision"] = {{"dop", 26}}; }, "collision.dop", "8, 28 or 80"},
+        BadInput{"k-DOP family beyond an int", [](json& d) { d["collision"] = {{"dop", 4294967324u}}; },
+                 "collision.dop", "8, 28 or 80"},
         BadInput{"fractional k-DOP family", [](json& d) { d["collision"] = {{"dop", 28.5}}; }, "collision.dop",
                  "8, 28 or 80"},
         BadInput{"box grid above one", [](json& d) { d["collision"] = {{"box_resolution", 1.5}}; },
