@@ -32,6 +32,7 @@ Document::Document(scene::Reconfigurable scene, fs::path file, collision::Collis
 }
 
 void Document::publish(std::shared_ptr<const scene::Reconfigurable> next, const scene::DirtySet& dirty) {
+  if (scene_) retired_.push_back(std::move(scene_));
   scene_ = std::move(next);
   const auto share = [&](int part) {
     part_meshes_[part] = std::make_shared<const geometry::Mesh>(scene_->parts[part].mesh);

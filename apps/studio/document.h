@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "reconfig/collision/collision_service.h"
 #include "reconfig/scene/command.h"
@@ -81,6 +82,10 @@ class Document {
   /// settings. An edit of those (`scene::set_collision_settings`, or undoing one) hands the
   /// design to a new service, which detects every transition again.
   const collision::DetectorOptions& detector_options() const { return service_options_.detector; }
+  /// Scene versions an edit replaced stay alive until this is called (at the end of each UI
+  /// frame): a panel may hold references into the scene it started drawing from across an edit
+  /// it makes.
+  void release_retired_scenes() { retired_.clear(); }
   /// The version number of the current scene as submitted to the collision service.
   std::uint64_t version() const { return version_; }
 
@@ -90,6 +95,7 @@ class Document {
   bool step_history(bool forward);
 
   std::shared_ptr<const scene::Reconfigurable> scene_;
+  std::vector<std::shared_ptr<const scene::Reconfigurable>> retired_;  ///< see `release_retired_scenes`
   std::vector<std::shared_ptr<const geometry::Mesh>> part_meshes_;
   std::vector<bool> solid_parts_;
   std::vector<std::shared_ptr<const geometry::Mesh>> moving_meshes_;

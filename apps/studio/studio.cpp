@@ -102,6 +102,7 @@ void Studio::frame(std::chrono::steady_clock::time_point now) {
   if (document_) {
     std::string problem = document_->autosave_if_due(now, options_.autosave_interval);
     if (!problem.empty()) set_status(std::move(problem), true);
+    document_->release_retired_scenes();  // the panels are done with the scenes they drew from
   }
 }
 
