@@ -96,11 +96,9 @@ std::optional<double> closest_axis_parameter(const view::Ray& ray, const Eigen::
 
 std::optional<double> ring_angle(const view::Ray& ray, const Eigen::Vector3d& center, const Eigen::Vector3d& axis,
                                  const Eigen::Vector3d& reference) {
-  const double denominator = ray.direction.dot(axis);
-  if (std::abs(denominator) < 1e-6) return std::nullopt;
-  const double s = (center - ray.origin).dot(axis) / denominator;
-  if (s < 0) return std::nullopt;
-  const Eigen::Vector3d offset = ray.at(s) - center;
+  const std::optional<double> s = view::ray_plane(ray, center, axis);
+  if (!s) return std::nullopt;
+  const Eigen::Vector3d offset = ray.at(*s) - center;
   const Eigen::Vector3d u = reference.normalized(), v = axis.cross(u);
   return std::atan2(offset.dot(v), offset.dot(u));
 }

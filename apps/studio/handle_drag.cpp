@@ -1,20 +1,6 @@
 #include "handle_drag.h"
 
-#include <cmath>
-
 namespace reconfig::studio {
-namespace {
-
-/// Where the ray crosses the plane through `point` with normal `normal`, if it does at a usable
-/// angle.
-std::optional<Eigen::Vector3d> plane_crossing(const view::Ray& ray, const Eigen::Vector3d& point, const Eigen::Vector3d& normal) {
-  const double facing = ray.direction.dot(normal);
-  if (std::abs(facing) < 1e-6) return std::nullopt;
-  return ray.at((point - ray.origin).dot(normal) / facing);
-}
-
-}  // namespace
-
 Eigen::Vector3d handle_end(const motion::TranslationKey& key, const Eigen::Vector3d& pivot, bool out) {
   return pivot + (out ? key.out : key.in);
 }
@@ -47,10 +33,10 @@ std::optional<HandleRef> hit_handle(const std::vector<motion::TranslationKey>& k
 }
 
 motion::TranslationKey HandleDrag::key_for(const view::Ray& ray) const {
-  const auto from = plane_crossing(start_ray, start_end, normal), to = plane_crossing(ray, start_end, normal);
+  const auto from = view::ray_plane(start_ray, start_end, normal), to = view::ray_plane(ray, start_end, normal);
   motion::TranslationKey key = start_key;
   if (!from || !to) return key;
-  (handle.out ? key.out : key.in) += *to - *from;
+  (handle.out ? key.out : key.in) += ray.at(*to) - start_ray.at(*from);
   return key;
 }
 

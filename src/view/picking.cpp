@@ -25,6 +25,14 @@ std::optional<Projection> project_to_pixel(const Camera& camera, int width, int 
   return Projection{{(ndc_x + 1) * width / 2, (1 - ndc_y) * height / 2}, depth};
 }
 
+std::optional<double> ray_plane(const Ray& ray, const Eigen::Vector3d& point, const Eigen::Vector3d& normal) {
+  const double facing = ray.direction.dot(normal);
+  if (std::abs(facing) < 1e-6 * normal.norm()) return std::nullopt;
+  const double s = (point - ray.origin).dot(normal) / facing;
+  if (!(s >= 0)) return std::nullopt;
+  return s;
+}
+
 std::optional<double> ray_triangle(const Ray& ray, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
                                    const Eigen::Vector3d& c) {
   const Eigen::Vector3d e1 = b - a, e2 = c - a;

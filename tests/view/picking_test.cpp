@@ -46,6 +46,17 @@ TEST(Picking, RayTriangleHitsInsideAndMissesOutside) {
   EXPECT_FALSE(ray_triangle({{0.2, 0.2, 2}, {1, 0, 0}}, a, b, c));   // parallel
 }
 
+TEST(Picking, RayPlaneMeetsThePlaneInFrontOnly) {
+  const Ray ray{{0.5, -1, 3}, Eigen::Vector3d(0.2, 0.1, -1).normalized()};
+  const Eigen::Vector3d point(4, 7, 1), normal(0, 0, 2);  // the plane z = 1
+  const auto s = ray_plane(ray, point, normal);
+  ASSERT_TRUE(s);
+  EXPECT_NEAR(ray.at(*s).z(), 1.0, 1e-12);
+  EXPECT_FALSE(ray_plane(ray, Eigen::Vector3d(0, 0, 5), normal));                // behind
+  EXPECT_FALSE(ray_plane({{0, 0, 3}, {1, 0, 0}}, point, normal));                // parallel
+  EXPECT_NEAR(*ray_plane(ray, point, -normal), *s, 1e-12);                       // either side's normal
+}
+
 TEST(Picking, RayMeshReturnsNearestFace) {
   const geometry::Mesh box = geometry::make_box(Eigen::Vector3d(2, 2, 2));
   const Ray ray{{0.1, 0.2, 5}, {0, 0, -1}};

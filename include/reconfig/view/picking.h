@@ -30,6 +30,11 @@ struct Projection {
 };
 std::optional<Projection> project_to_pixel(const Camera& camera, int width, int height, const Eigen::Vector3d& point);
 
+/// Ray parameter s ≥ 0 where `ray` crosses the plane through `point` with normal `normal`, or
+/// nullopt when the plane is behind it or it runs (nearly) parallel to the plane (`normal`
+/// need not be unit length).
+std::optional<double> ray_plane(const Ray& ray, const Eigen::Vector3d& point, const Eigen::Vector3d& normal);
+
 /// Ray parameter s ≥ 0 where `ray` crosses triangle (a, b, c) (Möller–Trumbore, both
 /// sides), or nullopt when it misses or runs parallel to the triangle.
 std::optional<double> ray_triangle(const Ray& ray, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
