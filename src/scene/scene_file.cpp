@@ -254,8 +254,7 @@ CollisionSettings read_collision_settings(const JsonCursor& c) {
     only.*setting = settings.*setting;
     if (const std::string problem = only.problem(); !problem.empty()) c[key].fail(problem);
   };
-  check("tolerance", &CollisionSettings::tolerance);
-  check("dop", &CollisionSettings::dop);
+  check("tolerance", &CollisionSettings::tolerance);  // (the family was checked as it was read)
   check("box_resolution", &CollisionSettings::box_resolution);
   check("frame", &CollisionSettings::frame);
   return settings;
