@@ -1,5 +1,7 @@
 #include "reconfig/geometry/triangle_bvh.h"
 
+#include "reconfig/geometry/closest_point_on_triangle.h"
+
 #include <algorithm>
 #include <array>
 #include <cassert>
@@ -103,41 +105,115 @@ void TriangleBvh::for_each_overlapping(const Eigen::AlignedBox3d& box, const std
   }
 }
 
-void TriangleBvh::for_each_overlapping_pair(const TriangleBvh& other,
-                                            const std::function<void(int f, int g)>& visit) const {
+template <class OtherNodeBox, class OtherTriangleBox>
+void TriangleBvh::visit_overlapping_pairs(const TriangleBvh& other, const OtherNodeBox& other_node_box,
+                                          const OtherTriangleBox& other_triangle_box,
+                                          const std::function<void(int f, int g)>& visit) const {
   if (nodes_.front().begin == nodes_.front().end || other.nodes_.front().begin == other.nodes_.front().end) return;
-  std::vector<std::pair<int, int>> stack{{0, 0}};
+  struct Item {
+    int i, j;
+    Eigen::AlignedBox3d b_box;  ///< other's node j in this frame
+  };
+  std::vector<Item> stack{{0, 0, other_node_box(other.nodes_[0])}};
   stack.reserve(128);
   std::vector<Eigen::AlignedBox3d> other_boxes;
   while (!stack.empty()) {
-    const auto [i, j] = stack.back();
+    const Item item = stack.back();
     stack.pop_back();
-    const Node& a = nodes_[i];
-    const Node& b = other.nodes_[j];
-    if (!a.box.intersects(b.box)) continue;
+    const Node& a = nodes_[item.i];
+    const Node& b = other.nodes_[item.j];
+    if (!a.box.intersects(item.b_box)) continue;
     const bool a_leaf = a.left < 0, b_leaf = b.left < 0;
     if (a_leaf && b_leaf) {
       other_boxes.clear();
-      for (int k = b.begin; k < b.end; ++k) other_boxes.push_back(triangle_box(other.V_, other.F_, other.order_[k]));
+      for (int k = b.begin; k < b.end; ++k) other_boxes.push_back(other_triangle_box(other.order_[k]));
       for (int k = a.begin; k < a.end; ++k) {
         const int f = order_[k];
         const Eigen::AlignedBox3d fbox = triangle_box(V_, F_, f);
-        if (!fbox.intersects(b.box)) continue;
+        if (!fbox.intersects(item.b_box)) continue;
         for (int l = b.begin; l < b.end; ++l)
           if (fbox.intersects(other_boxes[l - b.begin])) visit(f, other.order_[l]);
       }
       continue;
     }
     // Descend the larger (by volume-free measure: diagonal) of two inner nodes, or the inner one.
-    const bool split_a = b_leaf || (!a_leaf && a.box.diagonal().squaredNorm() >= b.box.diagonal().squaredNorm());
+    const bool split_a =
+        b_leaf || (!a_leaf && a.box.diagonal().squaredNorm() >= item.b_box.diagonal().squaredNorm());
     if (split_a) {
-      stack.emplace_back(a.right, j);
-      stack.emplace_back(a.left, j);
+      stack.push_back({a.right, item.j, item.b_box});
+      stack.push_back({a.left, item.j, item.b_box});
     } else {
-      stack.emplace_back(i, b.right);
-      stack.emplace_back(i, b.left);
+      stack.push_back({item.i, b.right, other_node_box(other.nodes_[b.right])});
+      stack.push_back({item.i, b.left, other_node_box(other.nodes_[b.left])});
     }
   }
+}
+
+void TriangleBvh::for_each_overlapping_pair(const TriangleBvh& other,
+                                            const std::function<void(int f, int g)>& visit) const {
+  visit_overlapping_pairs(
+      other, [](const Node& node) { return node.box; },
+      [&](int g) { return triangle_box(other.V_, other.F_, g); }, visit);
+}
+
+void TriangleBvh::for_each_overlapping_pair(const TriangleBvh& other, const Eigen::Isometry3d& other_to_this,
+                                            const std::function<void(int f, int g)>& visit) const {
+  const Eigen::Matrix3d R = other_to_this.linear();
+  const Eigen::Matrix3d R_abs = R.cwiseAbs();
+  // The box around a moved box: its center moved, its half extents through |R| (exact for
+  // the moved box's corners), widened by a few ulps of the coordinates for the rounding of R.
+  const auto node_box = [&](const Node& node) {
+    if (node.box.isEmpty()) return node.box;
+    const Eigen::Vector3d c = other_to_this * node.box.center();
+    const Eigen::Vector3d h = R_abs * (0.5 * node.box.sizes());
+    const double pad = 1e-12 * (c.cwiseAbs().maxCoeff() + h.maxCoeff());
+    return Eigen::AlignedBox3d(c - h - Eigen::Vector3d::Constant(pad), c + h + Eigen::Vector3d::Constant(pad));
+  };
+  const auto moved_triangle_box = [&](int g) {
+    Eigen::AlignedBox3d box;
+    for (int k = 0; k < 3; ++k) box.extend(other_to_this * other.V_.row(other.F_(g, k)).transpose());
+    return box;
+  };
+  visit_overlapping_pairs(other, node_box, moved_triangle_box, visit);
+}
+
+TriangleBvh::Nearest TriangleBvh::nearest(const Eigen::Vector3d& q, double max_distance) const {
+  Nearest best;
+  if (nodes_.front().begin == nodes_.front().end) return best;
+  double best_d2 = max_distance * max_distance;
+  const auto box_d2 = [&](const Node& node) { return node.box.squaredExteriorDistance(q); };
+  // Depth-first, nearer child first, pruning nodes farther than the best so far.
+  std::array<std::pair<int, double>, 64> stack;
+  int top = 0;
+  stack[top++] = {0, box_d2(nodes_[0])};
+  while (top > 0) {
+    const auto [index, d2] = stack[--top];
+    if (d2 > best_d2) continue;
+    const Node& node = nodes_[index];
+    if (node.left < 0) {
+      for (int i = node.begin; i < node.end; ++i) {
+        const int f = order_[i];
+        const Eigen::Vector3d p = closest_point_on_triangle(q, V_.row(F_(f, 0)).transpose(), V_.row(F_(f, 1)).transpose(),
+                                                            V_.row(F_(f, 2)).transpose())
+                                      .point;
+        const double e2 = (p - q).squaredNorm();
+        if (e2 < best_d2 || (best.triangle < 0 && e2 <= best_d2)) {
+          best_d2 = e2;
+          best = {f, p, e2};
+        }
+      }
+      continue;
+    }
+    const double dl = box_d2(nodes_[node.left]), dr = box_d2(nodes_[node.right]);
+    if (dl <= dr) {
+      stack[top++] = {node.right, dr};
+      stack[top++] = {node.left, dl};
+    } else {
+      stack[top++] = {node.left, dl};
+      stack[top++] = {node.right, dr};
+    }
+  }
+  return best;
 }
 
 }  // namespace reconfig::geometry

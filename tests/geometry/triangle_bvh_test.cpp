@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "exact_kernels_test_util.h"
+#include "reconfig/geometry/closest_point_on_triangle.h"
 #include "support/random_soup.h"
 
 namespace reconfig::geometry {
@@ -99,6 +100,53 @@ TEST(TriangleBvh, PairQueriesMatchBruteForceOnSoups) {
       EXPECT_GT(expected.size(), 50u);  // the test is not vacuous
     }
   }
+}
+
+TEST(TriangleBvh, MovedPairQueriesFindEveryPairWhoseMovedBoxesOverlap) {
+  std::mt19937 rng(13);
+  std::normal_distribution<double> normal(0, 1);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::size_t found_total = 0;
+  for (int trial = 0; trial < 12; ++trial) {
+    const Mesh a = random_soup(rng, 300, 0.15), b = random_soup(rng, 200, 0.15);
+    Eigen::Isometry3d b_to_a = Eigen::Isometry3d::Identity();
+    b_to_a.linear() = Eigen::Quaterniond(normal(rng), normal(rng), normal(rng), normal(rng)).normalized().toRotationMatrix();
+    b_to_a.translation() = 0.3 * (Vector3d(unit(rng), unit(rng), unit(rng)) - Vector3d::Constant(0.5));
+    const Eigen::MatrixX3d moved = (b.V * b_to_a.linear().transpose()).rowwise() + b_to_a.translation().transpose();
+    Pairs visited;
+    TriangleBvh(a.V, a.F).for_each_overlapping_pair(TriangleBvh(b.V, b.F), b_to_a,
+                                                    [&](int f, int g) { visited.emplace_back(f, g); });
+    std::sort(visited.begin(), visited.end());
+    EXPECT_TRUE(std::adjacent_find(visited.begin(), visited.end()) == visited.end()) << "a pair visited twice";
+    // Every pair whose moved triangle boxes overlap is visited (the tree may visit more).
+    const Pairs expected = brute_pairs(a, Mesh{moved, b.F});
+    EXPECT_TRUE(std::includes(visited.begin(), visited.end(), expected.begin(), expected.end())) << trial;
+    found_total += expected.size();
+  }
+  EXPECT_GT(found_total, 100u);  // the test is not vacuous
+}
+
+TEST(TriangleBvh, NearestMatchesBruteForce) {
+  std::mt19937 rng(14);
+  std::uniform_real_distribution<double> unit(-0.5, 1.5);
+  const Mesh soup = random_soup(rng, 300, 0.1);
+  const TriangleBvh bvh(soup.V, soup.F);
+  for (int q = 0; q < 200; ++q) {
+    const Vector3d p(unit(rng), unit(rng), unit(rng));
+    double best = std::numeric_limits<double>::infinity();
+    for (int f = 0; f < soup.face_count(); ++f)
+      best = std::min(best, (closest_point_on_triangle(p, soup.V.row(soup.F(f, 0)).transpose(),
+                                                       soup.V.row(soup.F(f, 1)).transpose(),
+                                                       soup.V.row(soup.F(f, 2)).transpose())
+                                 .point -
+                             p)
+                                .squaredNorm());
+    const TriangleBvh::Nearest nearest = bvh.nearest(p);
+    ASSERT_GE(nearest.triangle, 0);
+    EXPECT_DOUBLE_EQ(nearest.squared_distance, best);
+    EXPECT_DOUBLE_EQ((nearest.point - p).squaredNorm(), nearest.squared_distance);
+  }
+  EXPECT_EQ(TriangleBvh(Eigen::MatrixX3d(0, 3), Eigen::MatrixX3i(0, 3)).nearest(Vector3d::Zero()).triangle, -1);
 }
 
 TEST(TriangleBvh, TouchingBoxesCount) {

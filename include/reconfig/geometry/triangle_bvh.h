@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <functional>
+#include <limits>
 #include <vector>
 
 namespace reconfig::geometry {
@@ -28,6 +29,23 @@ class TriangleBvh {
   void for_each_overlapping_pair(const TriangleBvh& other,
                                  const std::function<void(int f, int g)>& visit) const;
 
+  /// Calls `visit(f, g)` for every triangle f of this tree and g of `other` whose boxes
+  /// may overlap once `other` is placed by `other_to_this` (a rigid map from `other`'s frame to
+  /// this tree's): nodes of `other` are bounded by the box around their moved box, triangles by
+  /// the box of their moved corners. Each pair is visited at most once.
+  void for_each_overlapping_pair(const TriangleBvh& other, const Eigen::Isometry3d& other_to_this,
+                                 const std::function<void(int f, int g)>& visit) const;
+
+  /// The nearest point of the mesh to a query point.
+  struct Nearest {
+    int triangle = -1;  ///< -1 for an empty mesh
+    Eigen::Vector3d point = Eigen::Vector3d::Zero();
+    double squared_distance = 0;
+  };
+  /// The triangle nearest to `q` and its nearest point (ties: the first found). Searches at
+  /// most within `max_distance` (returns triangle −1 when nothing is that close).
+  Nearest nearest(const Eigen::Vector3d& q, double max_distance = std::numeric_limits<double>::infinity()) const;
+
   const Eigen::MatrixX3d& vertices() const { return V_; }
   const Eigen::MatrixX3i& faces() const { return F_; }
 
@@ -37,6 +55,13 @@ class TriangleBvh {
     int left = -1, right = -1;  ///< children, or -1 for a leaf
     int begin = 0, end = 0;     ///< leaf: range in order_
   };
+  /// The pair traversal of both `for_each_overlapping_pair`s: `other_node_box(node)` and
+  /// `other_triangle_box(g)` give `other`'s boxes in this tree's frame.
+  template <class OtherNodeBox, class OtherTriangleBox>
+  void visit_overlapping_pairs(const TriangleBvh& other, const OtherNodeBox& other_node_box,
+                               const OtherTriangleBox& other_triangle_box,
+                               const std::function<void(int f, int g)>& visit) const;
+
   Eigen::MatrixX3d V_;
   Eigen::MatrixX3i F_;
   std::vector<Node> nodes_;
