@@ -1,0 +1,54 @@
+#pragma once
+/// @file
+/// Automatic resolution (reconfigurables §6.6): gradient descent on the intersection energy
+/// with a golden-section line search, greedily over pairs of parts, until a transition is
+/// collision-free or no step lowers the energy.
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "reconfig/collision/spacetime_detector.h"
+#include "reconfig/common/progress.h"
+#include "reconfig/scene/reconfigurable.h"
+
+namespace reconfig::resolve {
+
+/// One greedy round: the pair with the largest energy, and what the descent did to it.
+struct ResolveRound {
+  int round = 0;
+  std::vector<int> pair;          ///< the two parts
+  double energy_before = 0;       ///< of the pair, over its intervals
+  double energy_after = 0;
+  int steps = 0;                  ///< descent steps taken
+  int intervals_before = 0;       ///< of the whole transition, detected at the round's start
+  std::vector<std::string> inserted_keys;  ///< keys inserted at the severity time ("part translation 0.42")
+};
+
+struct AutoResolveRequest {
+  int transition = 0;
+  collision::DetectorOptions detector = {};  ///< how collisions are detected between rounds
+  int max_rounds = 30;
+  int max_steps = 12;  ///< descent steps per round
+  /// Key times stay put unless this is set (moving times changes the choreography's timing).
+  bool move_times = false;
+  ProgressCallback progress = nullptr;  ///< fraction of max_rounds; false cancels
+  std::function<void(const ResolveRound&)> on_round = nullptr;  ///< after each round
+};
+
+struct AutoResolveResult {
+  scene::Reconfigurable scene;  ///< the design with its keys moved (meshes and states untouched)
+  bool collision_free = false;  ///< by the detector, after the last round
+  bool cancelled = false;
+  int intervals_left = 0;
+  std::vector<ResolveRound> rounds;
+  std::string stopped_because;  ///< one line for people
+};
+
+/// Resolves the collisions of one transition by moving its inner keys (and the handles that
+/// shape the motion). The end keys are the states' poses and stay fixed. A part of a pair with
+/// no inner key near the pair's collision interval gets one inserted at the severity time first
+/// (the motion is unchanged by the insertion). Parts without keyframed tracks are not moved.
+AutoResolveResult auto_resolve(const scene::Reconfigurable& scene, const AutoResolveRequest& request);
+
+}  // namespace reconfig::resolve

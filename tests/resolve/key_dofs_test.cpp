@@ -1,0 +1,94 @@
+#include "reconfig/resolve/key_dofs.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "reconfig/common/input_error.h"
+#include "reconfig/scene/edits.h"
+#include "support/random_scene.h"
+
+namespace reconfig::resolve {
+namespace {
+
+/// A random scene whose moving parts have inner translation and rotation keys (turns of up to a
+/// full turn, so segments turn by more than 90°), some keys moved off the even times.
+scene::Reconfigurable scene_with_inner_keys(std::uint32_t seed) {
+  scene::Reconfigurable scene = reconfig::testing::random_scene(seed, {.parts = 2, .moving = 2, .rotation_keys = 3});
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> inner(0.2, 0.8);
+  for (const scene::Part& part : scene.parts) {
+    scene::insert_key("move", part.name, scene::KeyKind::kTranslation, inner(random))->apply(scene);
+    scene::insert_key("move", part.name, scene::KeyKind::kTranslation, 0.93)->apply(scene);
+  }
+  return scene;
+}
+
+TEST(KeyDofs, ListsInnerKeysAndTheHandlesThatShapeTheMotion) {
+  const scene::Reconfigurable scene = scene_with_inner_keys(1);
+  const std::vector<KeyDof> dofs = key_dofs(scene, 0, 0);
+  // 4 translation keys: inner 1, 2 (point, in, out, time each), first key's out, last's in;
+  // 3 rotation keys: inner 1 (rotation, time).
+  int translation = 0, handles = 0, rotation = 0, time = 0;
+  for (const KeyDof& dof : dofs) {
+    translation += dof.kind == DofKind::kTranslation;
+    handles += dof.kind == DofKind::kHandleIn || dof.kind == DofKind::kHandleOut;
+    rotation += dof.kind == DofKind::kRotation;
+    time += dof.kind == DofKind::kTime;
+    if (dof.kind == DofKind::kTranslation || dof.kind == DofKind::kRotation) {
+      EXPECT_GT(dof.key, 0);  // never an end key's point or rotation: those are the states'
+    }
+  }
+  EXPECT_EQ(translation, 2);
+  EXPECT_EQ(handles, 6);
+  EXPECT_EQ(rotation, 1);
+  EXPECT_EQ(time, 3);
+  EXPECT_EQ(dof_coordinates(dofs), 2 * 3 + 6 * 3 + 3 + 3);
+  EXPECT_EQ(dof_coordinates(key_dofs(scene, 0, 0, {.handles = false, .rotations = false, .times = false})), 6);
+  scene::Reconfigurable still = scene;
+  still.transitions[0].tracks.erase(still.parts[1].name);
+  EXPECT_TRUE(key_dofs(still, 0, 1).empty());
+}
+
+/// The velocity of rest point p of the part at time t, for a twist column.
+Eigen::Vector3d point_velocity(const Eigen::Matrix<double, 6, 1>& twist, const Eigen::Vector3d& y) {
+  return twist.head<3>() + twist.tail<3>().cross(y);
+}
+
+TEST(KeyDofs, TwistJacobianMatchesFiniteDifferencesOfEveryKind) {
+  for (std::uint32_t seed = 1; seed <= 12; ++seed) {
+    const scene::Reconfigurable scene = scene_with_inner_keys(seed);
+    const std::vector<KeyDof> dofs = key_dofs(scene, 0, 0);
+    const int n = dof_coordinates(dofs);
+    const scene::Part& part = scene.parts[0];
+    for (double t : {0.05, 0.3, 0.55, 0.77, 0.96}) {
+      const auto J = twist_jacobian(scene, 0, 0, dofs, t);
+      const Eigen::Vector3d p = part.mesh.V.row(0).transpose();
+      const Eigen::Vector3d y = scene.pose_at(0, 0, t).apply(part.center, p);
+      for (int k = 0; k < n; ++k) {
+        const double h = 1e-6;
+        const auto displaced = [&](double s) {
+          scene::Reconfigurable moved = scene;
+          Eigen::VectorXd step = Eigen::VectorXd::Zero(n);
+          step[k] = s;
+          displace_keys(moved, 0, 0, dofs, step);
+          return moved.pose_at(0, 0, t).apply(part.center, p);
+        };
+        const Eigen::Vector3d fd = (displaced(h) - displaced(-h)) / (2 * h);
+        const Eigen::Vector3d analytic = point_velocity(J.col(k), y);
+        EXPECT_LT((analytic - fd).norm(), 1e-5 * (1 + fd.norm())) << "seed " << seed << " t " << t << " coordinate " << k;
+      }
+    }
+  }
+}
+
+TEST(KeyDofs, DisplacingATimePastItsNeighbourIsRefused) {
+  scene::Reconfigurable scene = scene_with_inner_keys(2);
+  const std::vector<KeyDof> dofs = key_dofs(scene, 0, 0, {.handles = false, .rotations = false, .times = true});
+  Eigen::VectorXd step = Eigen::VectorXd::Zero(dof_coordinates(dofs));
+  step[3] = 2.0;  // the first inner key's time, far past the next key
+  EXPECT_THROW(displace_keys(scene, 0, 0, dofs, step), InputError);
+}
+
+}  // namespace
+}  // namespace reconfig::resolve
