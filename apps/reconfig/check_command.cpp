@@ -14,6 +14,7 @@
 #include "reconfig/collision/reference_check.h"
 #include "reconfig/common/input_error.h"
 #include "reconfig/common/write_atomically.h"
+#include "reconfig/resolve/interval_energy.h"
 #include "reconfig/scene/scene_file.h"
 
 namespace reconfig::cli {
@@ -30,6 +31,7 @@ struct CheckOptions {
   double box_resolution = collision::DetectorOptions{}.box_resolution;
   scene::CollisionSettings given;  ///< which of them were given
   bool all_contacts = false;
+  bool energy = false;
   int threads = 0;
   int samples = 1000;
   std::vector<std::string> transitions;
@@ -43,6 +45,8 @@ struct CheckOutcome {
   std::string method;           ///< one line for people
   nlohmann::ordered_json facts;  ///< the same for scripts
   double seconds = 0;
+  /// With --energy: per transition, per interval (same order as `transitions`).
+  std::vector<std::vector<resolve::IntervalEnergy>> energies = {};
 
   bool any_collision() const {
     for (const auto& t : transitions)
@@ -63,6 +67,7 @@ nlohmann::ordered_json to_json(const scene::Reconfigurable& scene, const CheckOu
   root["transitions"] = nlohmann::ordered_json::array();
   for (const auto& transition : outcome.transitions) {
     nlohmann::ordered_json intervals = nlohmann::ordered_json::array();
+    const std::size_t t = &transition - outcome.transitions.data();
     for (const auto& ci : transition.intervals) {
       nlohmann::ordered_json parts = nlohmann::ordered_json::array();
       for (int p : ci.parts) parts.push_back(scene.parts[p].name);
@@ -74,6 +79,13 @@ nlohmann::ordered_json to_json(const scene::Reconfigurable& scene, const CheckOu
                            {"box_max", {hi.x(), hi.y(), hi.z()}},
                            {"containment", ci.containment},
                            {"possible", ci.possible}});
+      if (!outcome.energies.empty()) {
+        const resolve::IntervalEnergy& e = outcome.energies[t][&ci - transition.intervals.data()];
+        intervals.back()["energy"] = e.energy;
+        intervals.back()["contour_energy"] = e.contour_energy;
+        intervals.back()["penetration_energy"] = e.penetration_energy;
+        intervals.back()["severity_time"] = e.severity_time;
+      }
     }
     root["transitions"].push_back({{"name", transition.name}, {"intervals", intervals}});
   }
@@ -105,9 +117,15 @@ std::string text_report(const scene::Reconfigurable& scene, const CheckOutcome& 
     }
     out += fmt::format("{} collision interval{}\n", transition.intervals.size(),
                        transition.intervals.size() == 1 ? "" : "s");
-    for (const auto& ci : transition.intervals)
+    for (const auto& ci : transition.intervals) {
       out += fmt::format("  t = {:.3f} – {:.3f}  {}{}  at {}\n", ci.t0, ci.t1, part_names(scene, ci), qualifiers(ci),
                          box_text(ci.box));
+      if (!outcome.energies.empty()) {
+        const auto& e = outcome.energies[&transition - outcome.transitions.data()][&ci - transition.intervals.data()];
+        out += fmt::format("      energy {:.4g} (contour {:.4g}, penetration {:.4g}), most severe at t = {:.3f}\n",
+                           e.energy, e.contour_energy, e.penetration_energy, e.severity_time);
+      }
+    }
   }
   return out;
 }
@@ -172,6 +190,19 @@ CheckOutcome run_engine(const scene::Reconfigurable& scene, const CheckOptions& 
           0};
 }
 
+/// The intersection energy and severity time of every interval (--energy).
+std::vector<std::vector<resolve::IntervalEnergy>> interval_energies(
+    const scene::Reconfigurable& scene, const std::vector<collision::TransitionCollisions>& transitions) {
+  resolve::ShapeCache shapes;
+  std::vector<std::vector<resolve::IntervalEnergy>> energies;
+  for (const auto& transition : transitions) {
+    energies.emplace_back();
+    for (const auto& ci : transition.intervals)
+      energies.back().push_back(resolve::interval_energy(scene, shapes, transition.transition, ci));
+  }
+  return energies;
+}
+
 int run_check(const CheckOptions& options) {
   std::optional<tbb::global_control> threads;
   if (options.threads > 0) threads.emplace(tbb::global_control::max_allowed_parallelism, options.threads);
@@ -188,6 +219,7 @@ int run_check(const CheckOptions& options) {
                                            : run_engine(scene, options, transitions, bar.callback());
   outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   bar.finish();
+  if (options.energy) outcome.energies = interval_energies(scene, outcome.transitions);
   const nlohmann::ordered_json json = to_json(scene, outcome);
   if (options.json) fmt::print("{}\n", json.dump(2));
   else fmt::print("{}", text_report(scene, outcome, options.scene));
@@ -216,6 +248,9 @@ void add_check_command(CLI::App& app, int& exit_code) {
   command->add_flag("--conservative,!--no-conservative", options->conservative,
                     "Engine: also report near misses the true motion may turn into collisions (never misses one); "
                     "overrides the scene's");
+  command->add_flag("--energy", options->energy,
+                    "Also give each interval its intersection energy (contour length plus penetration depth, "
+                    "integrated over time) and the time it is most severe");
   command->add_flag("--all-contacts", options->all_contacts,
                     "Engine: find every intersecting triangle pair instead of stopping once the intervals are known "
                     "(same intervals, slower on deep overlaps)");

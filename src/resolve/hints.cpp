@@ -1,6 +1,6 @@
 #include "reconfig/resolve/hints.h"
 
-#include <algorithm>
+#include "reconfig/resolve/interval_energy.h"
 
 namespace reconfig::resolve {
 
@@ -22,23 +22,15 @@ HintResult compute_hints(const scene::Reconfigurable& scene, ShapeCache& shapes,
   HintResult result;
   double largest = -1;
   for (const collision::CollisionInterval& ci : request.intervals) {
-    if (std::find(ci.parts.begin(), ci.parts.end(), request.part) == ci.parts.end()) continue;
-    for (int other : ci.parts) {
-      if (other == request.part) continue;
-      PairEnergyRequest pair;
-      pair.transition = request.transition;
-      pair.part_a = request.part;
-      pair.part_b = other;
-      pair.t0 = std::max(0.0, ci.t0 - request.time_margin);
-      pair.t1 = std::min(1.0, ci.t1 + request.time_margin);
-      const PairEnergy energy = pair_energy(scene, shapes, pair);
-      result.energy += energy.energy;
-      if (energy.energy > largest) {
-        largest = energy.energy;
-        result.severity_time = energy.severity_time;
-      }
-      gradient += energy_gradient(scene, request.transition, request.part, dofs, energy, true);
+    const IntervalEnergy energy =
+        interval_energy(scene, shapes, request.transition, ci, request.time_margin, request.part);
+    result.energy += energy.energy;
+    if (!energy.pairs.empty() && energy.energy > largest) {
+      largest = energy.energy;
+      result.severity_time = energy.severity_time;
     }
+    for (const auto& [pair, pair_energy] : energy.pairs)
+      gradient += energy_gradient(scene, request.transition, request.part, dofs, pair_energy, true);
   }
   int column = 0;
   for (const KeyDof& dof : dofs) {

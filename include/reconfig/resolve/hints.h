@@ -30,8 +30,8 @@ struct Hint {
 struct HintRequest {
   int transition = 0;
   int part = 0;
-  /// The collision intervals to resolve: each must involve `part`; each pair (part, other part
-  /// of the interval) contributes its energy over the interval's time extent.
+  /// The collision intervals to resolve: each pair (part, other part of an interval)
+  /// contributes its energy over the interval's time extent; intervals without `part` add none.
   std::vector<collision::CollisionInterval> intervals = {};
   DofSelection dofs = {};
   /// Each interval's extent is widened by this much on both sides (clipped to [0, 1]) so
