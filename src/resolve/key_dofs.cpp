@@ -63,8 +63,9 @@ void add_translation_dofs(const std::vector<motion::TranslationKey>& keys, const
   for (int j = 0; j < m; ++j) {
     const bool inner = j > 0 && j + 1 < m;
     if (inner) dofs.push_back({DofKind::kTranslation, scene::KeyKind::kTranslation, j});
-    if (selection.handles && m > 1 && j > 0) dofs.push_back({DofKind::kHandleIn, scene::KeyKind::kTranslation, j});
-    if (selection.handles && m > 1 && j + 1 < m) dofs.push_back({DofKind::kHandleOut, scene::KeyKind::kTranslation, j});
+    const bool handles = selection.handles && (inner || selection.end_handles);
+    if (handles && m > 1 && j > 0) dofs.push_back({DofKind::kHandleIn, scene::KeyKind::kTranslation, j});
+    if (handles && m > 1 && j + 1 < m) dofs.push_back({DofKind::kHandleOut, scene::KeyKind::kTranslation, j});
     if (inner && selection.times) dofs.push_back({DofKind::kTime, scene::KeyKind::kTranslation, j});
   }
 }

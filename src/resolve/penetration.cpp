@@ -9,6 +9,11 @@ namespace {
 void add_inside_samples(const PartShape& inner, const Eigen::Isometry3d& place_inner, const PartShape& outer,
                         const Eigen::Isometry3d& place_outer, double sign, Penetration& result) {
   const Eigen::Isometry3d inner_to_outer = place_outer.inverse() * place_inner;
+  // The inner part's box, moved into the outer's frame, bounded by a box: nothing to do when
+  // that misses the outer part's box.
+  const Eigen::Vector3d c = inner_to_outer * inner.bounds.center();
+  const Eigen::Vector3d h = inner_to_outer.linear().cwiseAbs() * (0.5 * inner.bounds.sizes());
+  if (!Eigen::AlignedBox3d(c - h, c + h).intersects(outer.bounds)) return;
   const Eigen::Matrix3d R_outer = place_outer.linear();
   for (std::size_t s = 0; s < inner.sample_points.size(); ++s) {
     const Eigen::Vector3d q = inner_to_outer * inner.sample_points[s];

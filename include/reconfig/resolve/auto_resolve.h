@@ -45,8 +45,9 @@ struct AutoResolveResult {
   std::string stopped_because;  ///< one line for people
 };
 
-/// Resolves the collisions of one transition by moving its inner keys (and the handles that
-/// shape the motion). The end keys are the states' poses and stay fixed. A part of a pair with
+/// Resolves the collisions of one transition by moving its inner keys with their handles. The
+/// end keys are the states' poses and stay fixed, and so do their handles (how a part leaves
+/// and reaches a state: a stowed part can often leave only one way). A part of a pair with
 /// no inner key near the pair's collision interval gets one inserted at the severity time first
 /// (the motion is unchanged by the insertion). Parts without keyframed tracks are not moved.
 AutoResolveResult auto_resolve(const scene::Reconfigurable& scene, const AutoResolveRequest& request);

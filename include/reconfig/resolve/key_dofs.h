@@ -33,6 +33,9 @@ struct KeyDof {
 /// Which kinds to list.
 struct DofSelection {
   bool handles = true;
+  /// The first key's out handle and the last key's in handle: how the part leaves and
+  /// reaches its states (parts stowed in tight places can only leave one way).
+  bool end_handles = true;
   bool rotations = true;
   bool times = true;
 };
