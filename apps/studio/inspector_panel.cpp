@@ -91,6 +91,7 @@ void Studio::draw_inspector() {
     if (ImGui::Button("Remove key (Del)")) delete_selected_key();
   }
   if (ImGui::Button("Insert key (I)")) insert_key();
+  draw_resolve_section();
 
   ImGui::Separator();
   ImGui::BeginDisabled(document_->undo_label().empty());

@@ -10,6 +10,7 @@ constexpr int kSpace = 32;
 constexpr int kA = 65;  ///< letters are their upper-case ASCII codes
 constexpr int kF = 70;
 constexpr int kG = 71;
+constexpr int kH = 72;
 constexpr int kI = 73;
 constexpr int kO = 79;
 constexpr int kS = 83;

@@ -34,6 +34,10 @@ void Studio::draw_menu_bar() {
   }
   if (ImGui::BeginMenu("Collisions")) {
     if (ImGui::MenuItem("Settings...")) show_collision_settings();
+    if (ImGui::MenuItem("Hint for the selected part", "H", false, document_ && selected_part_ >= 0)) request_hint();
+    if (ImGui::MenuItem("Resolve this transition automatically", nullptr, false,
+                        document_ && active_transition_ >= 0 && !auto_resolve_))
+      start_auto_resolve();
     ImGui::EndMenu();
   }
   if (document_ && ImGui::BeginMenu("Transitions")) {

@@ -136,6 +136,19 @@ class Runner {
     fail("the collision service has no result for the open transition yet (wait-collisions first)");
   }
 
+  /// Automatic resolution of the open transition, waited for (one undoable edit).
+  void resolve_automatically(double seconds) {
+    if (!studio().start_auto_resolve()) fail("automatic resolution needs an open transition (and none running)");
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(static_cast<long>(seconds * 1000));
+    while (studio().auto_resolving()) {
+      if (std::chrono::steady_clock::now() > deadline) {
+        studio().cancel_auto_resolve();
+        fail(fmt::format("automatic resolution did not finish within {} s", seconds));
+      }
+      frontend_.run_frame();
+    }
+  }
+
   void click(ImVec2 at, int button = 0) { drag_through(frontend_, {at}, button); }
 
   void press_key(const std::string& chord) {
@@ -217,6 +230,11 @@ class Runner {
       drag_key(args);
     } else if (action == "drag-handle") {
       drag_handle(args);
+    } else if (action == "slide-hint") {
+      if (!studio().slide_along_hint(number(args, 0, "amount along the hint"))) fail(studio().status());
+      frontend_.run_frame();
+    } else if (action == "resolve-auto") {
+      resolve_automatically(args.empty() ? 120 : number(args, 0, "timeout in seconds"));
     } else if (action == "expect-collisions") {
       const auto& collisions = current_collisions();
       const int expected = static_cast<int>(number(args, 0, "interval count"));

@@ -90,6 +90,7 @@ void Studio::frame(std::chrono::steady_clock::time_point now) {
   now_ = now;
   seconds_ += dt;
   if (playing_) advance_playback(dt);
+  poll_auto_resolve();
   handle_shortcuts();
   draw_menu_bar();
   draw_state_graph();
@@ -133,6 +134,7 @@ void Studio::handle_shortcuts() {
     if (ImGui::IsKeyPressed(keys::kI, false)) insert_key();
     if (ImGui::IsKeyPressed(keys::kDelete, false)) delete_selected_key();
     if (ImGui::IsKeyPressed(keys::kF, false)) frame_all();
+    if (ImGui::IsKeyPressed(keys::kH, false)) request_hint();
     if (ImGui::IsKeyPressed(keys::kEscape, false)) select_part(-1);
   }
 }

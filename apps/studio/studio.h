@@ -10,8 +10,10 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <atomic>
 #include <chrono>
 #include <filesystem>
+#include <future>
 #include <memory>
 #include <optional>
 #include <string>
@@ -22,6 +24,8 @@
 #include "handle_drag.h"
 #include "reconfig/render/render_target.h"
 #include "reconfig/render/renderer.h"
+#include "reconfig/resolve/auto_resolve.h"
+#include "reconfig/resolve/hints.h"
 #include "reconfig/scene/edits.h"
 #include "reconfig/view/camera.h"
 
@@ -108,6 +112,33 @@ class Studio {
   const collision::DetectorOptions& detector_options() const;
   /// Opens the Collisions > Settings window (edits apply with its Apply button).
   void show_collision_settings();
+  /// The resolution hint (H) for the selected part: how each of its keys in the open
+  /// transition should move to lower the energy of its collision intervals there. Shown as
+  /// yellow arrows at the keys and in the inspector, with a slider along the steepest one.
+  /// @return false (with the reason in the status line) when there is nothing to hint
+  bool request_hint();
+  /// Moves the hinted element `amount` along its hint from where it was when the hint was
+  /// given (scene units; radians for a rotation; time for a key time). While `live`, each call
+  /// replaces the previous one's edit (collisions update as it slides); the last call of a
+  /// slide is one undoable edit. @return success
+  bool slide_along_hint(double amount, bool live = false);
+  /// Starts automatic resolution of the open transition in the background (key times may move
+  /// when `move_times`); the result arrives as one undoable edit. @return it started
+  bool start_auto_resolve(bool move_times = true);
+  /// Cancels a running automatic resolution (nothing is changed).
+  void cancel_auto_resolve();
+  bool auto_resolving() const { return auto_resolve_ != nullptr; }
+  /// The resolution hint on screen: the design version it is for, its part and result.
+  struct HintView {
+    int transition = -1, part = -1;
+    std::uint64_t version = 0;
+    resolve::HintResult result;
+    int steepest = -1;                  ///< index in result.hints, −1 when none
+    scene::KeyframedTrack base;         ///< the part's track when the hint was given
+    double slide = 0;                   ///< the slider's position
+    bool sliding = false;               ///< a slide's edit is applied and may be replaced
+  };
+  const std::optional<HintView>& resolution_hint() const { return hint_; }
 
   // ---- what the UI shows (for tests and scripts) ----------------------------------------
   int active_transition() const { return active_transition_; }
@@ -149,6 +180,12 @@ class Studio {
   void draw_status_bar();
   void draw_modals();
   void draw_collision_settings();
+  /// The inspector's section for hints and automatic resolution (resolve_panel.cpp).
+  void draw_resolve_section();
+  /// The hint's arrows, for the viewport's draw list.
+  void add_hint_arrows(render::DrawList& list) const;
+  /// Takes the result of a finished automatic resolution (each frame).
+  void poll_auto_resolve();
   void handle_shortcuts();
 
   // Viewport helpers.
@@ -184,6 +221,7 @@ class Studio {
     float ghost_spacing = 0;
     bool intervals = false;
     bool detailed = true;  ///< full meshes (false: the coarse ones drawn while things move)
+    std::array<std::int64_t, 2> hint{-1, 0};  ///< the hint's part and design version (arrows)
     bool operator==(const ViewportInputs& other) const;
   };
   std::optional<ViewportInputs> last_viewport_inputs_;
@@ -220,6 +258,20 @@ class Studio {
   bool show_open_dialog_ = false, show_save_as_dialog_ = false, confirm_close_ = false;
   /// The settings being edited in the Collisions > Settings window, while it is open.
   std::optional<collision::DetectorOptions> settings_draft_;
+  /// Hints and automatic resolution (resolve_panel.cpp).
+  std::optional<HintView> hint_;
+  resolve::ShapeCache hint_shapes_;
+  std::vector<std::shared_ptr<const geometry::Mesh>> hint_shape_meshes_;  ///< what hint_shapes_ was built from
+  struct AutoResolveJob {
+    ~AutoResolveJob() { cancel = true; }  // before the future waits for the thread to end
+    int transition = -1;
+    std::atomic<double> progress{0};
+    std::atomic<bool> cancel{false};
+    std::atomic<int> rounds{0};
+    std::atomic<double> energy{0};  ///< of the last round's pair, after it
+    std::future<resolve::AutoResolveResult> result;
+  };
+  std::unique_ptr<AutoResolveJob> auto_resolve_;
   bool quit_ = false;
 };
 

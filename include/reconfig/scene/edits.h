@@ -2,6 +2,7 @@
 /// @file
 /// The edit commands a designer performs (each undoable, each reporting its dirty ranges).
 
+#include <map>
 #include <memory>
 #include <string>
 
@@ -10,6 +11,7 @@
 #include "reconfig/motion/pose.h"
 #include "reconfig/motion/slerp_rotation_track.h"
 #include "reconfig/scene/command.h"
+#include "reconfig/scene/track.h"
 
 namespace reconfig::scene {
 
@@ -48,6 +50,12 @@ std::unique_ptr<Command> set_state_pose(std::string state, std::string part, mot
 /// @param scene the scene the command will be applied to (names the transition's end states)
 std::unique_ptr<Command> set_pose_at(const Reconfigurable& scene, std::string transition, std::string part, double t,
                                      motion::Pose pose);
+
+/// Replaces the tracks of the parts named in `tracks` in `transition` at once (what automatic
+/// resolution gives): one undoable step, refused if the scene it makes is invalid.
+/// @param label  what the step says in the history ("resolve unfold automatically")
+std::unique_ptr<Command> set_transition_tracks(std::string transition, std::map<std::string, Track> tracks,
+                                               std::string label);
 
 /// Replaces a part's rest geometry; its pivot `center` is kept so poses keep their meaning.
 std::unique_ptr<Command> replace_part_mesh(std::string part, geometry::Mesh mesh);

@@ -1,0 +1,239 @@
+// Resolving collisions in the studio: the hint (H) for the selected part — yellow arrows at its
+// keys, a slider that moves the steepest element along its hint with live collision updates —
+// and automatic resolution of the open transition in the background, as one undoable edit.
+
+#include <fmt/format.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <variant>
+
+#include "studio.h"
+
+namespace reconfig::studio {
+namespace {
+
+/// The intervals of `transition` in the snapshot that involve `part`.
+std::vector<collision::CollisionInterval> intervals_of(const collision::CollisionSnapshot& snapshot, int transition,
+                                                       int part) {
+  std::vector<collision::CollisionInterval> found;
+  for (const auto& tr : snapshot.transitions)
+    if (tr.transition == transition)
+      for (const auto& ci : tr.intervals)
+        if (std::find(ci.parts.begin(), ci.parts.end(), part) != ci.parts.end()) found.push_back(ci);
+  return found;
+}
+
+std::string hint_name(const resolve::Hint& hint) {
+  if (hint.dof.kind == resolve::DofKind::kTime)
+    return fmt::format("time of {} key {}", hint.dof.track == scene::KeyKind::kTranslation ? "translation" : "rotation",
+                       hint.dof.key);
+  return fmt::format("{} of key {}", resolve::dof_kind_name(hint.dof.kind), hint.dof.key);
+}
+
+/// How far the slider reaches each way: half the part's size for points and handles, a
+/// quarter turn for rotations, a tenth of the transition for times.
+double slide_reach(const resolve::Hint& hint, const geometry::Mesh& mesh) {
+  if (hint.dof.kind == resolve::DofKind::kRotation) return M_PI / 2;
+  if (hint.dof.kind == resolve::DofKind::kTime) return 0.1;
+  return 0.5 * (mesh.V.colwise().maxCoeff() - mesh.V.colwise().minCoeff()).norm();
+}
+
+}  // namespace
+
+bool Studio::request_hint() {
+  if (!document_ || active_transition_ < 0 || selected_part_ < 0) {
+    set_status("hint: select a part in an open transition first", true);
+    return false;
+  }
+  const auto snapshot = collisions();
+  const std::vector<collision::CollisionInterval> intervals =
+      snapshot ? intervals_of(*snapshot, active_transition_, selected_part_) : std::vector<collision::CollisionInterval>{};
+  const scene::Reconfigurable& scene = document_->scene();
+  if (intervals.empty()) {
+    set_status(fmt::format("hint: {} does not collide in this transition", scene.parts[selected_part_].name));
+    hint_.reset();
+    return false;
+  }
+  if (hint_shape_meshes_ != document_->part_meshes()) {  // the geometry changed: new shapes
+    hint_shapes_ = resolve::ShapeCache();
+    hint_shape_meshes_ = document_->part_meshes();
+  }
+  HintView view;
+  view.transition = active_transition_;
+  view.part = selected_part_;
+  view.version = document_->version();
+  view.result = resolve::compute_hints(scene, hint_shapes_,
+                                       {.transition = active_transition_, .part = selected_part_, .intervals = intervals});
+  for (int i = 0; i < static_cast<int>(view.result.hints.size()); ++i)
+    if (view.result.hints[i].slope < 0 &&
+        (view.steepest < 0 || view.result.hints[i].slope < view.result.hints[view.steepest].slope))
+      view.steepest = i;
+  if (const scene::KeyframedTrack* track = selected_keyframed_track()) view.base = *track;
+  if (view.steepest < 0) {
+    set_status(fmt::format("hint: {} has no keys to move here (energy {:.3g})", scene.parts[selected_part_].name,
+                           view.result.energy));
+  } else {
+    set_status(fmt::format("hint: move the {} (energy {:.3g}, most severe at t = {:.3f})",
+                           hint_name(view.result.hints[view.steepest]), view.result.energy, view.result.severity_time));
+  }
+  hint_ = std::move(view);
+  return hint_->steepest >= 0;
+}
+
+bool Studio::slide_along_hint(double amount, bool live) {
+  if (!document_ || !hint_ || hint_->steepest < 0) return false;
+  HintView& view = *hint_;
+  const resolve::Hint& hint = view.result.hints[view.steepest];
+  const scene::Reconfigurable& scene = document_->scene();
+  const std::string& transition = scene.transitions[view.transition].name;
+  const std::string& part = scene.parts[view.part].name;
+  std::unique_ptr<scene::Command> command;
+  const Eigen::VectorXd step = amount * hint.direction;
+  if (hint.dof.track == scene::KeyKind::kTranslation) {
+    motion::TranslationKey key = view.base.translation.at(hint.dof.key);
+    const Eigen::Vector3d d = step.size() == 3 ? Eigen::Vector3d(step) : Eigen::Vector3d::Zero();
+    if (hint.dof.kind == resolve::DofKind::kTime) key.time += step[0];
+    if (hint.dof.kind == resolve::DofKind::kTranslation || hint.dof.kind == resolve::DofKind::kHandleIn) key.in += d;
+    if (hint.dof.kind == resolve::DofKind::kTranslation) key.point += d;
+    if (hint.dof.kind == resolve::DofKind::kTranslation || hint.dof.kind == resolve::DofKind::kHandleOut) key.out += d;
+    command = scene::set_translation_key(transition, part, hint.dof.key, key);
+  } else {
+    motion::RotationKey key = view.base.rotation.at(hint.dof.key);
+    if (hint.dof.kind == resolve::DofKind::kTime) {
+      key.time += step[0];
+    } else if (step.norm() > 0) {
+      key.rotation = Eigen::Quaterniond(Eigen::AngleAxisd(step.norm(), Eigen::Vector3d(step).normalized())) * key.rotation;
+    }
+    command = scene::set_rotation_key(transition, part, hint.dof.key, key);
+  }
+  if (view.sliding) document_->undo();  // the previous position of this slide
+  view.sliding = false;
+  const bool applied = execute(std::move(command));
+  view.sliding = applied && live;
+  view.slide = amount;
+  view.version = document_->version();
+  return applied;
+}
+
+bool Studio::start_auto_resolve(bool move_times) {
+  if (!document_ || active_transition_ < 0 || auto_resolve_) return false;
+  auto job = std::make_unique<AutoResolveJob>();
+  job->transition = active_transition_;
+  AutoResolveJob* state = job.get();
+  resolve::AutoResolveRequest request;
+  request.transition = active_transition_;
+  request.detector = document_->detector_options();
+  request.move_times = move_times;
+  request.progress = [state](double fraction) {
+    state->progress = fraction;
+    return !state->cancel.load();
+  };
+  request.on_round = [state](const resolve::ResolveRound& round) {
+    state->rounds = round.round + 1;
+    state->energy = round.energy_after;
+  };
+  job->result = std::async(std::launch::async, [scene = document_->scene(), request] {
+    return resolve::auto_resolve(scene, request);
+  });
+  auto_resolve_ = std::move(job);
+  set_status(fmt::format("resolving {} automatically...", document_->scene().transitions[active_transition_].name));
+  return true;
+}
+
+void Studio::cancel_auto_resolve() {
+  if (!auto_resolve_) return;
+  auto_resolve_->cancel = true;
+  auto_resolve_->result.wait();
+  auto_resolve_.reset();
+  set_status("automatic resolution cancelled: nothing changed");
+}
+
+void Studio::poll_auto_resolve() {
+  if (!auto_resolve_ || auto_resolve_->result.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
+  const int transition = auto_resolve_->transition;
+  resolve::AutoResolveResult result = auto_resolve_->result.get();
+  auto_resolve_.reset();
+  if (!document_ || result.cancelled || transition >= static_cast<int>(document_->scene().transitions.size())) return;
+  const std::string& name = document_->scene().transitions[transition].name;
+  std::map<std::string, scene::Track> tracks;
+  for (const auto& [part, track] : result.scene.transitions[transition].tracks) {
+    const auto& now = document_->scene().transitions[transition].tracks;
+    const auto it = now.find(part);
+    const auto* moved = std::get_if<scene::KeyframedTrack>(&track);
+    const auto* was = it == now.end() ? nullptr : std::get_if<scene::KeyframedTrack>(&it->second);
+    const bool same = moved && was && moved->translation.size() == was->translation.size() &&
+                      moved->rotation.size() == was->rotation.size() &&
+                      std::equal(moved->translation.begin(), moved->translation.end(), was->translation.begin(),
+                                 [](const auto& a, const auto& b) {
+                                   return a.time == b.time && a.point == b.point && a.in == b.in && a.out == b.out;
+                                 }) &&
+                      std::equal(moved->rotation.begin(), moved->rotation.end(), was->rotation.begin(),
+                                 [](const auto& a, const auto& b) {
+                                   return a.time == b.time && a.rotation.coeffs() == b.rotation.coeffs();
+                                 });
+    if (!same) tracks[part] = track;
+  }
+  if (tracks.empty()) {
+    set_status(fmt::format("automatic resolution of {}: {}; nothing changed", name, result.stopped_because),
+               !result.collision_free);
+    return;
+  }
+  if (execute(scene::set_transition_tracks(name, std::move(tracks), fmt::format("resolve {} automatically", name))))
+    set_status(fmt::format("resolved {} automatically in {} rounds: {}", name, result.rounds.size(), result.stopped_because),
+               !result.collision_free);
+  hint_.reset();
+}
+
+void Studio::add_hint_arrows(render::DrawList& list) const {
+  if (!document_ || !hint_ || hint_->transition != active_transition_) return;
+  const scene::Reconfigurable& scene = document_->scene();
+  const scene::Part& part = scene.parts[hint_->part];
+  const double length = 0.35 * (part.mesh.V.colwise().maxCoeff() - part.mesh.V.colwise().minCoeff()).norm();
+  const auto* track = std::get_if<scene::KeyframedTrack>(&scene.transitions[hint_->transition].tracks.at(part.name));
+  if (!track) return;
+  for (int i = 0; i < static_cast<int>(hint_->result.hints.size()); ++i) {
+    const resolve::Hint& hint = hint_->result.hints[i];
+    if (hint.dof.track != scene::KeyKind::kTranslation || hint.dof.kind == resolve::DofKind::kTime ||
+        hint.dof.key >= static_cast<int>(track->translation.size()) || hint.slope >= 0)
+      continue;
+    const motion::TranslationKey& key = track->translation[hint.dof.key];
+    const Eigen::Vector3d at = part.center + (hint.dof.kind == resolve::DofKind::kHandleIn    ? key.in
+                                              : hint.dof.kind == resolve::DofKind::kHandleOut ? key.out
+                                                                                              : key.point);
+    render::ArrowItem arrow;
+    arrow.from = at;
+    arrow.to = at + (i == hint_->steepest ? 1.0 : 0.5) * length * Eigen::Vector3d(hint.direction);
+    arrow.color = i == hint_->steepest ? Eigen::Vector3f(1.0f, 0.82f, 0.0f) : Eigen::Vector3f(0.95f, 0.9f, 0.45f);
+    arrow.head_fraction = 0.3;
+    list.arrows.push_back(arrow);
+  }
+}
+
+void Studio::draw_resolve_section() {
+  if (!document_ || active_transition_ < 0) return;
+  ImGui::Separator();
+  if (ImGui::Button("Hint (H)")) request_hint();
+  ImGui::SameLine();
+  if (auto_resolve_) {
+    ImGui::Text("resolving: round %d, %.0f %%", auto_resolve_->rounds.load(), 100 * auto_resolve_->progress.load());
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel")) cancel_auto_resolve();
+  } else if (ImGui::Button("Resolve automatically")) {
+    start_auto_resolve();
+  }
+  if (!hint_ || hint_->transition != active_transition_) return;
+  const scene::Reconfigurable& scene = document_->scene();
+  ImGui::Text("hint for %s: energy %.3g", scene.parts[hint_->part].name.c_str(), hint_->result.energy);
+  if (hint_->steepest < 0) return;
+  const resolve::Hint& hint = hint_->result.hints[hint_->steepest];
+  const float reach = static_cast<float>(slide_reach(hint, scene.parts[hint_->part].mesh));
+  float slide = static_cast<float>(hint_->slide);
+  ImGui::TextWrapped("slide the %s along its hint (yellow arrow):", hint_name(hint).c_str());
+  ImGui::SliderFloat("##along the hint", &slide, -reach, reach, "%.3f");
+  const bool changed = ImGui::IsItemEdited(), released = ImGui::IsItemDeactivatedAfterEdit();
+  if (changed || released) slide_along_hint(slide, !released);
+  ImGui::TextDisabled("release: one undoable edit");
+}
+
+}  // namespace reconfig::studio

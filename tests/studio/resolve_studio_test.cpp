@@ -1,0 +1,107 @@
+// Hints and automatic resolution in the studio, driven headless.
+
+#include <gtest/gtest.h>
+
+#include "keys.h"
+#include "script.h"
+#include "studio_test_util.h"
+
+namespace reconfig::studio {
+namespace {
+
+using std::chrono::milliseconds;
+
+class StudioResolve : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    StudioOptions options;
+    options.autosave_interval = milliseconds(0);
+    frontend_ = std::make_unique<HeadlessFrontend>(1000, 700, options);
+    ASSERT_TRUE(studio().open(bench_table_copy())) << studio().status();
+    unfold_ = studio().document()->scene().find_transition("unfold");
+    backrest_ = studio().document()->scene().find_part("backrest");
+    studio().open_transition(unfold_);
+    studio().select_part(backrest_);
+    frontend_->run_frame();
+    ASSERT_TRUE(frontend_->run_until_collisions_current(milliseconds(60000)));
+  }
+
+  Studio& studio() { return frontend_->studio(); }
+
+  void press(int key) {
+    frontend_->input().keys_down.insert(key);
+    frontend_->run_frame();
+    frontend_->input().keys_down.clear();
+    frontend_->run_frame();
+  }
+
+  std::size_t intervals_shown() {
+    for (const auto& t : studio().collisions()->transitions)
+      if (t.transition == unfold_) return t.intervals.size();
+    return 0;
+  }
+
+  std::unique_ptr<HeadlessFrontend> frontend_;
+  int unfold_ = -1, backrest_ = -1;
+};
+
+TEST_F(StudioResolve, HTellsHowToMoveTheSelectedPartAndTheSliderFollowsIt) {
+  ASSERT_EQ(intervals_shown(), 2u);  // the backrest hits both armrests
+  press(keys::kH);
+  const auto& hint = studio().resolution_hint();
+  ASSERT_TRUE(hint.has_value()) << studio().status();
+  EXPECT_GT(hint->result.energy, 0);
+  ASSERT_GE(hint->steepest, 0);
+  EXPECT_NE(studio().status().find("hint: move the"), std::string::npos) << studio().status();
+  // Slide the steepest handle along its hint (live steps, then a release), and the energy falls.
+  const double before = hint->result.energy;
+  for (double amount : {0.05, 0.1, 0.15}) ASSERT_TRUE(studio().slide_along_hint(amount, true)) << studio().status();
+  ASSERT_TRUE(studio().slide_along_hint(0.2)) << studio().status();
+  ASSERT_TRUE(frontend_->run_until_collisions_current(milliseconds(60000)));
+  press(keys::kH);
+  const double after = studio().resolution_hint() ? studio().resolution_hint()->result.energy : 0.0;
+  EXPECT_LT(after, before);
+  // The whole slide is one undoable edit.
+  ASSERT_TRUE(studio().undo());
+  ASSERT_TRUE(frontend_->run_until_collisions_current(milliseconds(60000)));
+  EXPECT_EQ(intervals_shown(), 2u);
+  EXPECT_FALSE(studio().undo());  // nothing before the slide
+}
+
+TEST_F(StudioResolve, AutomaticResolutionIsOneUndoableEdit) {
+  ASSERT_EQ(intervals_shown(), 2u);
+  ASSERT_TRUE(studio().start_auto_resolve());
+  for (int i = 0; i < 2000 && studio().auto_resolving(); ++i) frontend_->run_frame();
+  ASSERT_FALSE(studio().auto_resolving());
+  EXPECT_NE(studio().status().find("resolved unfold automatically"), std::string::npos) << studio().status();
+  ASSERT_TRUE(frontend_->run_until_collisions_current(milliseconds(60000)));
+  EXPECT_EQ(intervals_shown(), 0u);
+  ASSERT_TRUE(studio().undo());
+  ASSERT_TRUE(frontend_->run_until_collisions_current(milliseconds(60000)));
+  EXPECT_EQ(intervals_shown(), 2u);
+}
+
+TEST_F(StudioResolve, ScriptsHintSlideAndResolve) {
+  run_script(*frontend_,
+             "expect-collisions 2\n"
+             "key H\n"
+             "expect-status hint: move the\n"
+             "slide-hint 0.2\n"
+             "wait-collisions\n"
+             "key ctrl+z\n"
+             "resolve-auto 60\n"
+             "wait-collisions\n"
+             "expect-collisions 0\n"
+             "expect-status resolved unfold automatically\n",
+             "resolve script");
+  EXPECT_THROW(run_script(*frontend_, "slide-hint abc\n", "bad amount"), ScriptError);
+}
+
+TEST_F(StudioResolve, NoHintWithoutACollision) {
+  studio().select_part(studio().document()->scene().find_part("seat"));
+  EXPECT_FALSE(studio().request_hint());
+  EXPECT_NE(studio().status().find("does not collide"), std::string::npos) << studio().status();
+}
+
+}  // namespace
+}  // namespace reconfig::studio
