@@ -18,7 +18,7 @@ namespace reconfig::resolve {
 struct PartShape {
   /// @param mesh         the part's closed rest mesh (#V×3, #F×3, at least one triangle)
   /// @param max_samples  at most this many surface samples (vertices, evenly strided)
-  explicit PartShape(const geometry::Mesh& mesh, int max_samples = 1024);
+  explicit PartShape(const geometry::Mesh& mesh, int max_samples = 256);
 
   geometry::MeshSignedDistance distance;  ///< also holds the triangle tree of the rest mesh
   Eigen::AlignedBox3d bounds;             ///< box of the rest mesh
