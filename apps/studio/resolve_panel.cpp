@@ -216,7 +216,8 @@ void Studio::draw_resolve_section() {
   if (ImGui::Button("Hint (H)")) request_hint();
   ImGui::SameLine();
   if (auto_resolve_) {
-    ImGui::Text("resolving: round %d, %.0f %%", auto_resolve_->rounds.load(), 100 * auto_resolve_->progress.load());
+    ImGui::Text("resolving: round %d (energy %.3g), %.0f %%", auto_resolve_->rounds.load(), auto_resolve_->energy.load(),
+                100 * auto_resolve_->progress.load());
     ImGui::SameLine();
     if (ImGui::Button("Cancel")) cancel_auto_resolve();
   } else if (ImGui::Button("Resolve automatically")) {

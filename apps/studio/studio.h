@@ -268,7 +268,7 @@ class Studio {
     std::atomic<double> progress{0};
     std::atomic<bool> cancel{false};
     std::atomic<int> rounds{0};
-    std::atomic<double> energy{0};  ///< of the last round's pair, after it
+    std::atomic<double> energy{0};  ///< the last round's pair's energy after it (shown as it falls)
     std::future<resolve::AutoResolveResult> result;
   };
   std::unique_ptr<AutoResolveJob> auto_resolve_;
