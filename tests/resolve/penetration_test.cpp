@@ -2,20 +2,16 @@
 
 #include <gtest/gtest.h>
 
-#include <random>
 
 #include "reconfig/geometry/point_in_solid.h"
+#include "placements.h"
 #include "reconfig/geometry/primitives.h"
 
 namespace reconfig::resolve {
 namespace {
 
-Eigen::Isometry3d place(const Eigen::Vector3d& t, const Eigen::Quaterniond& q = Eigen::Quaterniond::Identity()) {
-  Eigen::Isometry3d M = Eigen::Isometry3d::Identity();
-  M.linear() = q.toRotationMatrix();
-  M.translation() = t;
-  return M;
-}
+using testing::moved;
+using testing::place;
 
 /// Slow reference: each sample classified by winding numbers (its distance to the surface is
 /// the signed distance's, itself tested against brute force in signed_distance_test).
@@ -44,15 +40,13 @@ TEST(Penetration, ABoxWhollyInsideAnotherHasItsMeanDepth) {
 }
 
 TEST(Penetration, MatchesTheReferenceOnRandomPlacements) {
-  std::mt19937 random(8);
-  std::normal_distribution<double> normal(0, 1);
+  testing::RandomPlacements random(8);
   const geometry::Mesh a = geometry::make_sphere(0.5, 2), b = geometry::make_box({1, 0.5, 0.7});
   const PartShape sa(a), sb(b);
   int inside = 0;
   for (int trial = 0; trial < 30; ++trial) {
-    const auto q = [&] { return Eigen::Quaterniond(normal(random), normal(random), normal(random), normal(random)).normalized(); };
-    const Eigen::Isometry3d pa = place(0.3 * Eigen::Vector3d(normal(random), normal(random), normal(random)), q());
-    const Eigen::Isometry3d pb = place(Eigen::Vector3d::Zero(), q());
+    const Eigen::Isometry3d pa = random.near_origin(0.3);
+    const Eigen::Isometry3d pb = random.near_origin(0);
     const Penetration p = penetration(sa, pa, sb, pb);
     const double reference = reference_depth(sa, pa, b, pb) + reference_depth(sb, pb, a, pa);
     EXPECT_NEAR(p.depth, reference, 1e-12) << trial;
@@ -62,25 +56,18 @@ TEST(Penetration, MatchesTheReferenceOnRandomPlacements) {
 }
 
 TEST(Penetration, GradientMatchesFiniteDifferences) {
-  std::mt19937 random(9);
-  std::normal_distribution<double> normal(0, 1);
+  testing::RandomPlacements random(9);
   const PartShape a(geometry::make_sphere(0.5, 2)), b(geometry::make_box({1, 0.5, 0.7}));
   int checked = 0;
   for (int trial = 0; trial < 30; ++trial) {
-    const auto q = [&] { return Eigen::Quaterniond(normal(random), normal(random), normal(random), normal(random)).normalized(); };
-    const Eigen::Isometry3d pa = place(0.25 * Eigen::Vector3d(normal(random), normal(random), normal(random)), q());
-    const Eigen::Isometry3d pb = place(Eigen::Vector3d::Zero(), q());
+    const Eigen::Isometry3d pa = random.near_origin(0.25);
+    const Eigen::Isometry3d pb = random.near_origin(0);
     const Penetration p = penetration(a, pa, b, pb);
     if (p.samples_inside == 0) continue;
-    const Eigen::Vector3d v(normal(random), normal(random), normal(random)), w(normal(random), normal(random), normal(random));
-    const auto moved = [&](double h) {
-      Eigen::Isometry3d m = Eigen::Isometry3d::Identity();
-      m.linear() = Eigen::AngleAxisd(h * w.norm(), w.normalized()).toRotationMatrix();
-      m.translation() = h * v;
-      return Eigen::Isometry3d(m * pa);
-    };
+    const Eigen::Vector3d v = random.vector(), w = random.vector();
     const double h = 1e-7;
-    const double fd = (penetration(a, moved(h), b, pb).depth - penetration(a, moved(-h), b, pb).depth) / (2 * h);
+    const double fd = (penetration(a, moved(pa, v, w, h), b, pb).depth - penetration(a, moved(pa, v, w, -h), b, pb).depth) /
+                      (2 * h);
     EXPECT_NEAR(p.gradient.force.dot(v) + p.gradient.torque.dot(w), fd, 1e-5 * (1 + std::abs(fd))) << trial;
     ++checked;
   }
