@@ -127,7 +127,9 @@ TEST(SceneFile, SaveWritesAtomicallyAndKeepsMeshPathsRelative) {
   EXPECT_FALSE(fs::exists(moved.string() + ".tmp"));
   const json saved = json::parse(std::ifstream(moved));
   EXPECT_EQ(saved["parts"][2]["mesh"], "../meshes/block.obj");
-  EXPECT_EQ(load_scene(moved).parts[2].mesh.face_count(), 12);
+  // A mesh outside the scene's folder is read only when the user allows it.
+  EXPECT_THROW(load_scene(moved), InputError);
+  EXPECT_EQ(load_scene(moved, {.allow_outside_paths = true}).parts[2].mesh.face_count(), 12);
 }
 
 TEST(SceneFile, ScrewTracksRoundTrip) {
@@ -199,7 +201,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"duplicate part name", [](json& d) { d["parts"][1]["name"] = "lid"; }, "parts[1].name", "duplicate"},
         BadInput{"two geometry sources",
                  [](json& d) { d["parts"][1]["box"] = {{"size", {1, 1, 1}}}; }, "parts[1]", "exactly one"},
-        BadInput{"negative box size", [](json& d) { d["parts"][0]["box"]["size"][2] = -1; }, "parts[0].box.size",
+        BadInput{"negative box size", [](json& d) { d["parts"][0]["box"]["size"][2] = -1; }, "parts[0].box.size[2]",
                  "positive"},
         BadInput{"missing mesh file", [](json& d) { d["parts"][1] = {{"name", "x"}, {"mesh", "missing.obj"}}; },
                  "parts[1].mesh", "missing.obj"},
