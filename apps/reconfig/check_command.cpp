@@ -21,6 +21,7 @@ namespace {
 
 struct CheckOptions {
   std::string scene;
+  scene::SceneLoadOptions load;
   bool json = false;
   bool reference = false;
   // The engine's settings given on the command line; each one given overrides the scene's.
@@ -175,7 +176,7 @@ CheckOutcome run_engine(const scene::Reconfigurable& scene, const CheckOptions& 
 int run_check(const CheckOptions& options) {
   std::optional<tbb::global_control> threads;
   if (options.threads > 0) threads.emplace(tbb::global_control::max_allowed_parallelism, options.threads);
-  const scene::Reconfigurable scene = scene::load_scene(options.scene);
+  const scene::Reconfigurable scene = scene::load_scene(options.scene, options.load);
   std::vector<int> transitions;
   for (const std::string& name : options.transitions) {
     const int index = scene.find_transition(name);
@@ -203,6 +204,7 @@ void add_check_command(CLI::App& app, int& exit_code) {
   CLI::App* command = app.add_subcommand(
       "check", "Spacetime collision detection over every transition (exit 0: none, 1: collisions, 2: bad input)");
   command->add_option("scene", options->scene, "Scene file (reconfig-scene JSON)")->required();
+  add_allow_outside_paths_flag(*command, options->load);
   command->add_flag("--json", options->json, "Print the result as JSON");
   command->add_flag("--reference", options->reference,
                     "Use the reference check (dense time sampling, exact static tests) instead of the engine");
