@@ -22,6 +22,15 @@ bool is_under(const fs::path& path, const fs::path& folder) {
   return !relative.empty() && *relative.begin() != "..";
 }
 
+/// Whether `path` stays under `folder` through its symbolic links, read as the kernel reads it
+/// and as its lexically normal form (what a loader may open instead): `missing/../link` is
+/// `link` once normalized.
+bool resolves_under(const fs::path& path, const fs::path& folder, const std::string& reference) {
+  const fs::path real_folder = resolved(folder, reference);
+  return is_under(resolved(path, reference), real_folder) &&
+         is_under(resolved(path.lexically_normal(), reference), real_folder);
+}
+
 }  // namespace
 
 std::string outside_folder_problem(const fs::path& folder, const std::string& reference) {
@@ -33,7 +42,7 @@ std::string outside_folder_problem(const fs::path& folder, const std::string& re
     how = "is an absolute path";
   else if (!is_under((base / written).lexically_normal(), base))
     how = "leads out of the file's folder with \"..\"";
-  else if (!is_under(resolved(base / written, reference), resolved(base, reference)))
+  else if (!resolves_under(base / written, base, reference))
     how = "leads out of the file's folder through a symbolic link";
   else
     return "";

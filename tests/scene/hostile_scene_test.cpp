@@ -5,7 +5,9 @@
 #include <sys/stat.h>
 
 #include <chrono>
+#include <cstdio>
 #include <fstream>
+#include <random>
 #include <nlohmann/json.hpp>
 
 #include "reconfig/common/input_error.h"
@@ -14,6 +16,7 @@
 #include "reconfig/geometry/save_mesh.h"
 #include "reconfig/scene/scene_file.h"
 #include "support/test_data.h"
+#include "support/text_mutation.h"
 
 namespace reconfig::scene {
 namespace {
@@ -242,6 +245,51 @@ TEST(HostileScene, MeshPathsMustStayInTheScenesFolder) {
   write_scene("meshes/../meshes/./inside.obj");
   geometry::save_obj(dir / "meshes" / "inside.obj", geometry::make_box({1, 1, 1}));
   EXPECT_NO_THROW(load_scene(dir / "scene.json"));
+}
+
+/// Mesh paths made of hostile pieces — FIFOs, devices, loops, links out, `..`, absolute and
+/// percent-encoded paths — never hang, never crash, and never load a mesh from outside the
+/// design unless allowed. RECONFIG_FUZZ_TRIALS and RECONFIG_FUZZ_SEED set the campaign.
+TEST(HostileScene, FuzzedMeshPathsNeverHangOrLeaveTheDesign) {
+  const fs::path root = testing::fresh_temp_dir();
+  const fs::path dir = root / "design";
+  fs::create_directories(dir / "sub");
+  geometry::save_obj(dir / "sub" / "inside.obj", geometry::make_box({1, 1, 1}));
+  geometry::save_obj(root / "outside.obj", geometry::make_box({2, 2, 2}));
+  ASSERT_EQ(::mkfifo((dir / "fifo.obj").c_str(), 0600), 0);
+  fs::create_symlink("/dev/zero", dir / "zero.stl");
+  fs::create_symlink("/dev/urandom", dir / "sub" / "random.glb");
+  fs::create_symlink("loop.obj", dir / "loop.obj");
+  fs::create_symlink("..", dir / "sub" / "up");
+  fs::create_symlink(root / "outside.obj", dir / "out.obj");
+  const std::vector<std::string> pieces = {"..", ".", "sub", "up", "inside.obj", "outside.obj", "fifo.obj", "zero.stl",
+                                           "random.glb", "loop.obj", "out.obj", "%2e%2e", "", "design", "/dev/zero",
+                                           root.string(), "missing.obj", "sub/inside.obj", "sub/up/outside.obj",
+                                           "../outside.obj", "sub/../sub/inside.obj"};
+  std::mt19937 rng(static_cast<unsigned>(testing::fuzz_setting("RECONFIG_FUZZ_SEED", 25)));
+  const int trials = testing::fuzz_setting("RECONFIG_FUZZ_TRIALS", 400);
+  int loaded = 0, loaded_outside = 0;
+  const auto start = std::chrono::steady_clock::now();
+  for (int trial = 0; trial < trials; ++trial) {
+    std::string mesh;
+    for (int k = 0, n = 1 + static_cast<int>(rng() % 3); k < n; ++k) mesh += (k ? "/" : "") + pieces[rng() % pieces.size()];
+    json document = valid_scene();
+    document["parts"][1] = {{"name", "ball"}, {"mesh", mesh}};
+    const bool allowed = rng() % 4 == 0;
+    try {
+      const Reconfigurable scene = parse_scene(document.dump(), dir, "fuzz.json", {.allow_outside_paths = allowed});
+      ++loaded;
+      const bool outside = scene.parts[1].mesh.V.cwiseAbs().maxCoeff() > 0.75;  // the 2×2×2 box
+      loaded_outside += outside;
+      EXPECT_TRUE(allowed || !outside) << "read a mesh outside the design through \"" << mesh << "\"";
+    } catch (const InputError& error) {
+      EXPECT_LT(std::string(error.what()).size(), 3 * kMaxInputErrorPart);
+    }
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::printf("[ fuzz     ] %d hostile mesh paths in %.2f s: %d loaded, %d of them from outside (allowed)\n", trials,
+              seconds, loaded, loaded_outside);
+  EXPECT_GT(loaded, 0);
 }
 
 }  // namespace
