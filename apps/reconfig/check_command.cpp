@@ -155,7 +155,12 @@ CheckOutcome run_engine(const scene::Reconfigurable& scene, const CheckOptions& 
   request.detector.all_contacts = options.all_contacts;
   request.transitions = transitions;
   request.progress = progress;
-  const collision::CollisionResult result = collision::detect_collisions(scene, request);
+  collision::CollisionResult result;
+  try {
+    result = collision::detect_collisions(scene, request);
+  } catch (const InputError& error) {  // a tolerance too fine for the design
+    throw error.in_file(options.scene);
+  }
   const collision::DetectorOptions& used = request.detector;
   const int dop = collision::halfspace_count(used.dop);
   return {result.transitions,
