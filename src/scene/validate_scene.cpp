@@ -23,14 +23,16 @@ std::string format_quaternion(const Eigen::Quaterniond& q) {
 // The checks below run on every edit, over the whole design: they take the JSON path of what
 // they check as a function (`path_of()`), which formats it only if the check fails.
 
+/// Returns the names (for lookups that stay fast with 10,000 parts).
 template <typename Named>
-void check_unique_names(const std::vector<Named>& items, const std::string& list) {
+std::set<std::string> check_unique_names(const std::vector<Named>& items, const std::string& list) {
   std::set<std::string> seen;
   for (std::size_t i = 0; i < items.size(); ++i) {
     const auto path = [&] { return fmt::format("{}[{}].name", list, i); };
     if (items[i].name.empty()) fail(path(), "name must not be empty");
     if (!seen.insert(items[i].name).second) fail(path(), fmt::format("duplicate name \"{}\"", items[i].name));
   }
+  return seen;
 }
 
 /// Positions must be finite and within `limit` of the origin.
@@ -156,7 +158,7 @@ bool poses_match(const motion::Pose& a, const motion::Pose& b, const PoseToleran
 void validate_scene(const Reconfigurable& scene, const PoseTolerance& tolerance) {
   if (scene.units.empty()) fail("units", "units must not be empty");
   if (const std::string problem = scene.collision.problem(); !problem.empty()) fail("collision", problem);
-  check_unique_names(scene.parts, "parts");
+  const std::set<std::string> parts = check_unique_names(scene.parts, "parts");
   check_unique_names(scene.states, "states");
   check_unique_names(scene.transitions, "transitions");
   const double limit = position_limit(scene);
@@ -169,7 +171,7 @@ void validate_scene(const Reconfigurable& scene, const PoseTolerance& tolerance)
   for (std::size_t i = 0; i < scene.states.size(); ++i) {
     for (const auto& [name, pose] : scene.states[i].poses) {
       const auto path = [&] { return fmt::format("states[{}].poses.{}", i, name); };
-      if (scene.find_part(name) < 0) fail(path(), fmt::format("unknown part \"{}\"", name));
+      if (!parts.contains(name)) fail(path(), fmt::format("unknown part \"{}\"", name));
       check_position(pose.translation, limit, [&] { return path() + ".translation"; });
       check_unit(pose.rotation, [&] { return path() + ".rotation"; });
     }
@@ -184,7 +186,7 @@ void validate_scene(const Reconfigurable& scene, const PoseTolerance& tolerance)
     if (transition.linkage) {
       for (std::size_t k = 0; k < transition.linkage->attach.size(); ++k) {
         const std::string& name = transition.linkage->attach[k].part;
-        if (scene.find_part(name) < 0)
+        if (!parts.contains(name))
           fail(fmt::format("{}.linkage.attach[{}].part", path_of(), k), fmt::format("unknown part \"{}\"", name));
       }
       if (const std::string part = edited_driven_part(transition); !part.empty())
@@ -193,7 +195,7 @@ void validate_scene(const Reconfigurable& scene, const PoseTolerance& tolerance)
                          "it again), not the part's track", part, transition.name));
     }
     for (const auto& [name, track] : transition.tracks)
-      if (scene.find_part(name) < 0)
+      if (!parts.contains(name))
         fail(fmt::format("{}.tracks.{}", path_of(), name), fmt::format("unknown part \"{}\"", name));
     for (const Part& part : scene.parts) {
       const auto track = transition.tracks.find(part.name);
