@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
+#include <chrono>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -58,6 +59,23 @@ TEST(HostileInputsCli, EscapeSequencesInAnErrorAreNotPrintedRaw) {
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_EQ(run.err.find('\x1b'), std::string::npos) << run.err;
   EXPECT_NE(run.err.find("mesh\\x1b[2J.obj"), std::string::npos) << run.err;
+}
+
+TEST(HostileInputsCli, AToleranceTooFineForTheDesignIsRefusedAtOnce) {
+  const fs::path scene = testing::fresh_temp_dir() / "beam.json";
+  // A beam 1e10 long making a quarter turn: at the default 1 mm, minutes of time steps.
+  std::ofstream(scene) << R"({"format": "reconfig-scene", "version": 1, "units": "m",
+    "parts": [{"name": "beam", "box": {"size": [1e10, 0.05, 0.5]}}],
+    "states": [{"name": "a"}, {"name": "b", "poses": {"beam": {"rotation": [0.70710678118654757, 0, 0, 0.70710678118654757]}}}],
+    "transitions": [{"name": "turn", "from": "a", "to": "b", "tracks": {"beam": {"rotation": [
+      {"time": 0, "quaternion": [1, 0, 0, 0]}, {"time": 1, "quaternion": [0.70710678118654757, 0, 0, 0.70710678118654757]}]}}}]})";
+  const auto start = std::chrono::steady_clock::now();
+  const auto run = run_reconfig("check " + scene.string());
+  EXPECT_EQ(run.exit_code, 2) << run.err;
+  EXPECT_NE(run.err.find(scene.string() + ": collision.tolerance: a tolerance of 0.001 is too fine"), std::string::npos)
+      << run.err;
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5));  // minutes before
+  EXPECT_EQ(run_reconfig("check --tolerance 100 " + scene.string()).exit_code, 0);
 }
 
 }  // namespace
