@@ -218,9 +218,8 @@ void check_accessors(const json& document, const std::map<std::string, View>& vi
   }
 }
 
-/// Refuses a node tree deeper than kMaxGltfNodeDepth, a cycle and children that do not exist.
-void check_node_tree(const json& document) {
-  const Entries nodes = entries(document, "nodes");
+/// Each node's children, as indices into `nodes`; refuses children that do not exist.
+std::vector<std::vector<std::size_t>> children_of(const Entries& nodes) {
   std::map<std::string, std::size_t> index;
   for (std::size_t i = 0; i < nodes.size(); ++i) index[nodes[i].first] = i;
   std::vector<std::vector<std::size_t>> children(nodes.size());
@@ -239,7 +238,15 @@ void check_node_tree(const json& document) {
       children[i].push_back(it->second);
     }
   }
-  // Depth-first from each node not yet done, without recursion: height = levels below and including it.
+  return children;
+}
+
+/// Refuses a node tree deeper than kMaxGltfNodeDepth or with a cycle: depth first from each
+/// node not yet done, without recursion, each node's height (its levels, itself included)
+/// computed once.
+void check_node_tree(const json& document) {
+  const Entries nodes = entries(document, "nodes");
+  const std::vector<std::vector<std::size_t>> children = children_of(nodes);
   std::vector<int> height(nodes.size(), 0);  // 0: not visited, -1: on the current path
   for (std::size_t root = 0; root < nodes.size(); ++root) {
     if (height[root] != 0) continue;
