@@ -1,10 +1,12 @@
 #include "scenes.h"
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <stdexcept>
 
 #include "reconfig/geometry/load_mesh.h"
+#include "reconfig/geometry/primitives.h"
 #include "reconfig/scene/part.h"
 
 namespace reconfig::bench {
@@ -87,6 +89,29 @@ scene::Reconfigurable gallery_scene() {
   track.translation[1].out = m + Eigen::Vector3d(1.5, 0, 0);
   track.rotation = {{0.0, qa}, {1.0, qb}};
   scene.transitions = {one_track_transition("walk", "walker", track)};
+  return scene;
+}
+
+scene::Reconfigurable crowd_scene(int parts, int moving) {
+  scene::Reconfigurable scene;
+  const int side = static_cast<int>(std::ceil(std::sqrt(parts)));
+  scene::State start{"start", {}}, end{"end", {}};
+  scene::Transition rise;
+  rise.name = "rise";
+  rise.from = "start";
+  rise.to = "end";
+  for (int k = 0; k < parts; ++k) {
+    const std::string name = "box_" + std::to_string(k);
+    scene.parts.push_back(make_part(name, geometry::make_box({1, 1, 1})));
+    const Eigen::Vector3d a(3.0 * (k % side), 3.0 * (k / side), 0), b = a + Eigen::Vector3d(0, 0, k < moving ? 1 : 0);
+    start.poses[name] = {Eigen::Quaterniond::Identity(), a};
+    end.poses[name] = {Eigen::Quaterniond::Identity(), b};
+    scene::KeyframedTrack track;
+    track.translation = polyline_keys({{0.0, a}, {1.0, b}});
+    if (k < moving) rise.tracks.emplace(name, track);
+  }
+  scene.states = {start, end};
+  scene.transitions = {rise};
   return scene;
 }
 

@@ -22,6 +22,7 @@ namespace {
 
 struct CheckOptions {
   std::string scene;
+  scene::SceneLoadOptions load;
   bool json = false;
   bool reference = false;
   // The engine's settings given on the command line; each one given overrides the scene's.
@@ -172,7 +173,12 @@ CheckOutcome run_engine(const scene::Reconfigurable& scene, const CheckOptions& 
   request.detector.all_contacts = options.all_contacts;
   request.transitions = transitions;
   request.progress = progress;
-  const collision::CollisionResult result = collision::detect_collisions(scene, request);
+  collision::CollisionResult result;
+  try {
+    result = collision::detect_collisions(scene, request);
+  } catch (const InputError& error) {  // a tolerance too fine for the design
+    throw error.in_file(options.scene);
+  }
   const collision::DetectorOptions& used = request.detector;
   const int dop = collision::halfspace_count(used.dop);
   return {result.transitions,
@@ -206,7 +212,7 @@ std::vector<std::vector<resolve::IntervalEnergy>> interval_energies(
 int run_check(const CheckOptions& options) {
   std::optional<tbb::global_control> threads;
   if (options.threads > 0) threads.emplace(tbb::global_control::max_allowed_parallelism, options.threads);
-  const scene::Reconfigurable scene = scene::load_scene(options.scene);
+  const scene::Reconfigurable scene = scene::load_scene(options.scene, options.load);
   std::vector<int> transitions;
   for (const std::string& name : options.transitions) {
     const int index = scene.find_transition(name);
@@ -235,6 +241,7 @@ void add_check_command(CLI::App& app, int& exit_code) {
   CLI::App* command = app.add_subcommand(
       "check", "Spacetime collision detection over every transition (exit 0: none, 1: collisions, 2: bad input)");
   command->add_option("scene", options->scene, "Scene file (reconfig-scene JSON)")->required();
+  add_allow_outside_paths_flag(*command, options->load);
   command->add_flag("--json", options->json, "Print the result as JSON");
   command->add_flag("--reference", options->reference,
                     "Use the reference check (dense time sampling, exact static tests) instead of the engine");

@@ -5,6 +5,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "reconfig/scene/scene_file.h"
+
 namespace reconfig::cli {
 
 /// Exit codes scripts rely on (FORMATS.md).
@@ -18,6 +20,13 @@ enum ExitCode : int {
 /// exit code in `exit_code`; a bad-input failure is thrown as `reconfig::InputError` and
 /// turned into a one-line message and exit code 2 by main.
 using CommandRegistrar = void (*)(CLI::App& app, int& exit_code);
+
+/// `--allow-outside-paths` on a command that loads a scene: its mesh paths (and a glTF mesh's
+/// buffer and image URIs) may then lead outside the scene's folder.
+inline void add_allow_outside_paths_flag(CLI::App& command, scene::SceneLoadOptions& load) {
+  command.add_flag("--allow-outside-paths", load.allow_outside_paths,
+                   "Let the scene read meshes outside its folder (absolute paths, \"..\", symbolic links out)");
+}
 
 void add_info_command(CLI::App& app, int& exit_code);
 void add_check_command(CLI::App& app, int& exit_code);

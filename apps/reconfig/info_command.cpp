@@ -14,6 +14,7 @@ namespace {
 
 struct InfoOptions {
   std::string scene;
+  scene::SceneLoadOptions load;
   bool json = false;
 };
 
@@ -35,7 +36,7 @@ std::string track_text(const scene::Track& track) {
 }
 
 int run_info(const InfoOptions& options) {
-  const scene::Reconfigurable scene = scene::load_scene(options.scene);
+  const scene::Reconfigurable scene = scene::load_scene(options.scene, options.load);
   nlohmann::ordered_json json;
   json["parts"] = nlohmann::ordered_json::array();
   if (!options.json)
@@ -88,6 +89,7 @@ void add_info_command(CLI::App& app, int& exit_code) {
   auto options = std::make_shared<InfoOptions>();
   CLI::App* command = app.add_subcommand("info", "Parts (triangles, mesh check), states and transitions of a scene");
   command->add_option("scene", options->scene, "Scene file (reconfig-scene JSON)")->required();
+  add_allow_outside_paths_flag(*command, options->load);
   command->add_flag("--json", options->json, "Print as JSON");
   command->callback([options, &exit_code] { exit_code = run_info(*options); });
 }

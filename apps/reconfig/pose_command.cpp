@@ -12,6 +12,7 @@ namespace {
 
 struct PoseOptions {
   std::string scene;
+  scene::SceneLoadOptions load;
   std::string transition;
   double time = 0;
   std::string state;
@@ -19,7 +20,7 @@ struct PoseOptions {
 };
 
 int run_pose(const PoseOptions& options) {
-  const scene::Reconfigurable scene = scene::load_scene(options.scene);
+  const scene::Reconfigurable scene = scene::load_scene(options.scene, options.load);
   int transition = -1, state = -1;
   if (!options.transition.empty()) {
     transition = scene.find_transition(options.transition);
@@ -59,6 +60,7 @@ void add_pose_command(CLI::App& app, int& exit_code) {
   auto options = std::make_shared<PoseOptions>();
   CLI::App* command = app.add_subcommand("pose", "Write the scene posed at a time of a transition (or in a state)");
   command->add_option("scene", options->scene, "Scene file (reconfig-scene JSON)")->required();
+  add_allow_outside_paths_flag(*command, options->load);
   auto* transition = command->add_option("--transition", options->transition, "Transition name");
   command->add_option("--time", options->time, "Time in [0, 1]")->check(CLI::Range(0.0, 1.0))->needs(transition);
   auto* state = command->add_option("--state", options->state, "State name (instead of a transition and time)");

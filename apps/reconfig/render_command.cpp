@@ -25,6 +25,7 @@ constexpr double kDegree = M_PI / 180;
 
 struct RenderOptions {
   std::string scene;
+  scene::SceneLoadOptions load;
   std::string transition;
   double time = 0;
   std::string state;
@@ -57,7 +58,7 @@ std::vector<double> parse_numbers(const std::string& text, const std::string& op
 }
 
 int run_render(const RenderOptions& options) {
-  const scene::Reconfigurable scene = scene::load_scene(options.scene);
+  const scene::Reconfigurable scene = scene::load_scene(options.scene, options.load);
   render::SceneDrawRequest request;
   if (!options.transition.empty()) {
     request.transition = scene.find_transition(options.transition);
@@ -150,6 +151,7 @@ void add_render_command(CLI::App& app, int& exit_code) {
   auto options = std::make_shared<RenderOptions>();
   CLI::App* command = app.add_subcommand("render", "Draw the scene at a time of a transition (or in a state) to a PNG, headless");
   command->add_option("scene", options->scene, "Scene file (reconfig-scene JSON)")->required();
+  add_allow_outside_paths_flag(*command, options->load);
   auto* transition = command->add_option("--transition", options->transition, "Transition name");
   command->add_option("--time", options->time, "Time in [0, 1]")->check(CLI::Range(0.0, 1.0))->needs(transition);
   auto* state = command->add_option("--state", options->state, "State name (default: the first state)");

@@ -13,13 +13,18 @@ namespace reconfig::studio {
 
 namespace fs = std::filesystem;
 
-std::unique_ptr<Document> Document::open(const fs::path& file, collision::CollisionServiceOptions options) {
-  return std::make_unique<Document>(scene::load_scene(file), fs::absolute(file), options);
+std::unique_ptr<Document> Document::open(const fs::path& file, collision::CollisionServiceOptions options,
+                                         const scene::SceneLoadOptions& load) {
+  // What a save or an autosave killed midway left behind (it would stay forever otherwise).
+  remove_stale_temporary(file);
+  remove_stale_temporary(autosave_path(fs::absolute(file)));
+  return std::make_unique<Document>(scene::load_scene(file, load), fs::absolute(file), options);
 }
 
-std::unique_ptr<Document> Document::recover(const fs::path& file, collision::CollisionServiceOptions options) {
+std::unique_ptr<Document> Document::recover(const fs::path& file, collision::CollisionServiceOptions options,
+                                            const scene::SceneLoadOptions& load) {
   const fs::path autosave = autosave_path(fs::absolute(file));
-  auto document = std::make_unique<Document>(scene::load_scene(autosave), fs::absolute(file), options);
+  auto document = std::make_unique<Document>(scene::load_scene(autosave, load), fs::absolute(file), options);
   document->modified_ = true;
   return document;
 }

@@ -14,6 +14,7 @@
 #include "reconfig/scene/command.h"
 #include "reconfig/scene/history.h"
 #include "reconfig/scene/reconfigurable.h"
+#include "reconfig/scene/scene_file.h"
 
 namespace reconfig::studio {
 
@@ -25,14 +26,17 @@ class Document {
  public:
   using Clock = std::chrono::steady_clock;
 
-  /// Loads a scene file. @throws InputError naming the file and JSON path of the problem
+  /// Loads a scene file, first removing the temporaries a killed save of it or of its autosave
+  /// left behind. @throws InputError naming the file and JSON path of the problem
   /// `options` are the studio's: the design's own collision settings take precedence.
   static std::unique_ptr<Document> open(const std::filesystem::path& file,
-                                        collision::CollisionServiceOptions options = {});
+                                        collision::CollisionServiceOptions options = {},
+                                        const scene::SceneLoadOptions& load = {});
   /// Loads the autosave of `file` instead of the file itself (crash recovery): the document
   /// still saves to `file` and starts out modified. @throws InputError
   static std::unique_ptr<Document> recover(const std::filesystem::path& file,
-                                           collision::CollisionServiceOptions options = {});
+                                           collision::CollisionServiceOptions options = {},
+                                           const scene::SceneLoadOptions& load = {});
 
   Document(scene::Reconfigurable scene, std::filesystem::path file, collision::CollisionServiceOptions options);
 

@@ -86,6 +86,8 @@ int main(int argc, char** argv) {
   app.add_option("--frame-times", options.frame_times, "write frame time statistics of --frames as JSON");
   app.add_option("--time", options.time, "start at this time of the first transition");
   app.add_flag("--ghosts", options.ghosts, "show ghosts of moving parts");
+  app.add_flag("--allow-outside-paths", options.studio.load.allow_outside_paths,
+               "let scenes read meshes outside their folder (absolute paths, \"..\", symbolic links out)");
   collision::DetectorOptions& detector = options.studio.collisions.detector;
   app.add_option("--tolerance", detector.tolerance,
                  "collision settings (of designs that save none): largest distance between proxy and true motion")

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <system_error>
 #include <thread>
+#include <utility>
 
 #include "keys.h"
 #include "panel_window.h"
@@ -27,10 +28,15 @@ Studio::Studio(StudioOptions options) : options_(std::move(options)), renderer_(
 
 bool Studio::open(const fs::path& file) {
   try {
-    document_ = Document::open(file, options_.collisions);
+    document_ = Document::open(file, options_.collisions, options_.load);
   } catch (const std::exception& error) {
-    set_status(fmt::format("cannot open {}: {}", file.string(), error.what()), true);
-    return false;
+    std::error_code ignored;
+    const bool autosave = fs::is_regular_file(Document::autosave_path(fs::absolute(file)), ignored);
+    set_status(fmt::format("cannot open {}: {}{}", file.string(), error.what(),
+                           autosave ? " (its autosave can be recovered)" : ""),
+               true);
+    if (autosave) recovery_candidate_ = fs::absolute(file);
+    return autosave;
   }
   reset_view_for_new_document();
   set_status(fmt::format("opened {}", file.string()));
@@ -73,6 +79,21 @@ void Studio::reset_view_for_new_document() {
 void Studio::set_status(std::string message, bool error) {
   status_ = std::move(message);
   status_is_error_ = error;
+  status_window_open_ = false;
+  status_window_due_ = error;
+}
+
+bool Studio::recover_autosave() {
+  const fs::path file = std::exchange(recovery_candidate_, {});
+  try {
+    document_ = Document::recover(file, options_.collisions, options_.load);
+  } catch (const std::exception& error) {
+    set_status(fmt::format("cannot recover: {}", error.what()), true);
+    return false;
+  }
+  reset_view_for_new_document();
+  set_status("recovered the autosave; save to keep it");
+  return true;
 }
 
 std::shared_ptr<const collision::CollisionSnapshot> Studio::collisions() const {
@@ -314,6 +335,23 @@ std::optional<ImVec2> Studio::viewport_point(const Eigen::Vector3d& world) const
 
 // ---- status bar and dialogs -----------------------------------------------------------------
 
+namespace {
+
+/// `text` cut to fit in `width` pixels, ending in "..." when cut.
+std::string fitted(const std::string& text, float width) {
+  if (ImGui::CalcTextSize(text.c_str()).x <= width) return text;
+  std::size_t low = 0, high = text.size();
+  while (low < high) {
+    const std::size_t middle = (low + high + 1) / 2;
+    if (ImGui::CalcTextSize((text.substr(0, middle) + "...").c_str()).x <= width) low = middle;
+    else high = middle - 1;
+  }
+  while (low > 0 && (static_cast<unsigned char>(text[low]) & 0xC0) == 0x80) --low;  // not inside a character
+  return text.substr(0, low) + "...";
+}
+
+}  // namespace
+
 void Studio::draw_status_bar() {
   const ImGuiIO& io = ImGui::GetIO();
   const float height = status_bar_height();
@@ -322,10 +360,8 @@ void Studio::draw_status_bar() {
   ImGui::Begin("##status", nullptr,
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
                    ImGuiWindowFlags_NoBringToFrontOnFocus);
-  if (status_is_error_) ImGui::TextColored({0.8f, 0.1f, 0.1f, 1}, "%s", status_.c_str());
-  else ImGui::TextUnformatted(status_.c_str());
+  std::string line;
   if (const auto snapshot = collisions()) {
-    std::string line;
     const bool current = snapshot->complete && snapshot->version == document_->version();
     if (!current) {
       std::size_t done = 0;
@@ -339,8 +375,38 @@ void Studio::draw_status_bar() {
       line = fmt::format("collisions: {} intervals in {} transitions, up to date", count,
                          snapshot->transitions.size());
     }
-    ImGui::SameLine(std::max(ImGui::GetWindowWidth() - ImGui::CalcTextSize(line.c_str()).x - 12, 300.0f));
+  }
+  // The status gets the room left of the collision line; a longer one is cut, and its whole
+  // text is a click away (an error opens it by itself).
+  const float line_x = std::max(ImGui::GetWindowWidth() - ImGui::CalcTextSize(line.c_str()).x - 12, 300.0f);
+  const float more_width = ImGui::CalcTextSize("more").x + 3 * ImGui::GetStyle().FramePadding.x;
+  const std::string shown = fitted(status_, line_x - ImGui::GetCursorPosX() - more_width - 16);
+  if (status_is_error_) ImGui::TextColored({0.8f, 0.1f, 0.1f, 1}, "%s", shown.c_str());
+  else ImGui::TextUnformatted(shown.c_str());
+  if (shown != status_) {
+    ImGui::SameLine();
+    if (ImGui::SmallButton("more")) status_window_open_ = true;
+    status_window_open_ = status_window_open_ || status_window_due_;
+  }
+  status_window_due_ = false;
+  if (!line.empty()) {
+    ImGui::SameLine(line_x);
     ImGui::TextUnformatted(line.c_str());
+  }
+  ImGui::End();
+  draw_status_window();
+}
+
+void Studio::draw_status_window() {
+  if (!status_window_open_) return;
+  const ImGuiIO& io = ImGui::GetIO();
+  ImGui::SetNextWindowPos({io.DisplaySize.x * 0.5f, io.DisplaySize.y * 0.5f}, ImGuiCond_Appearing, {0.5f, 0.5f});
+  ImGui::SetNextWindowSize({std::min(640.0f, io.DisplaySize.x - 40), 0}, ImGuiCond_Appearing);
+  if (ImGui::Begin(status_is_error_ ? "Error" : "Message", &status_window_open_, ImGuiWindowFlags_NoSavedSettings)) {
+    ImGui::TextWrapped("%s", status_.c_str());
+    if (ImGui::Button("Copy")) ImGui::SetClipboardText(status_.c_str());
+    ImGui::SameLine();
+    if (ImGui::Button("Close")) status_window_open_ = false;
   }
   ImGui::End();
 }
@@ -348,17 +414,14 @@ void Studio::draw_status_bar() {
 void Studio::draw_modals() {
   if (!recovery_candidate_.empty()) ImGui::OpenPopup("Recover unsaved work?");
   if (ImGui::BeginPopupModal("Recover unsaved work?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-    ImGui::Text("%s has an autosave newer than the file:\nthe studio closed before it was saved.",
-                recovery_candidate_.filename().string().c_str());
+    if (document_ && document_->file() == recovery_candidate_)
+      ImGui::Text("%s has an autosave newer than the file:\nthe studio closed before it was saved.",
+                  recovery_candidate_.filename().string().c_str());
+    else
+      ImGui::Text("%s cannot be opened, but it has an autosave:\nrecover the work saved there?",
+                  recovery_candidate_.filename().string().c_str());
     if (ImGui::Button("Recover")) {
-      try {
-        document_ = Document::recover(recovery_candidate_, options_.collisions);
-        reset_view_for_new_document();
-        set_status("recovered the autosave; save to keep it");
-      } catch (const std::exception& error) {
-        set_status(fmt::format("cannot recover: {}", error.what()), true);
-      }
-      recovery_candidate_.clear();
+      recover_autosave();
       ImGui::CloseCurrentPopup();
     }
     ImGui::SameLine();

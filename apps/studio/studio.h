@@ -55,6 +55,7 @@ struct StudioOptions {
   std::chrono::milliseconds autosave_interval{3000};
   double play_speed = 0.25;  ///< transition time per second while playing
   collision::CollisionServiceOptions collisions = editor_collision_options();
+  scene::SceneLoadOptions load;  ///< `--allow-outside-paths`
 };
 
 class Studio {
@@ -64,8 +65,13 @@ class Studio {
 
   // ---- documents -------------------------------------------------------------------------
   /// Opens a scene; on a bad file shows the error (and keeps what was open). If the file has
-  /// an autosave newer than itself, asks whether to recover it.
+  /// an autosave newer than itself, asks whether to recover it; so it does when the file is
+  /// corrupt or gone but an autosave is there (and then returns true: the autosave is offered).
   bool open(const std::filesystem::path& file);
+  /// The file whose autosave is offered for recovery ("" if none).
+  const std::filesystem::path& recovery_candidate() const { return recovery_candidate_; }
+  /// Opens the offered autosave (the Recover button). @return success
+  bool recover_autosave();
   /// Saves atomically; reports failures in the status line. @return success
   bool save();
   bool save_as(const std::filesystem::path& file);
@@ -148,6 +154,8 @@ class Studio {
   int selected_part() const { return selected_part_; }
   std::optional<KeyRef> selected_key() const { return selected_key_; }
   const std::string& status() const { return status_; }
+  /// Whether the window with the whole status text is open (a status too long for the bar).
+  bool status_window_open() const { return status_window_open_; }
   const Layout& layout() const { return layout_; }
   view::Camera& camera() { return camera_; }
   /// The collision picture the UI shows this frame (null before a document is open).
@@ -201,6 +209,7 @@ class Studio {
   bool step_history(bool forward);
   void advance_playback(double seconds);
   void set_status(std::string message, bool error = false);
+  void draw_status_window();
 
   StudioOptions options_;
   std::unique_ptr<Document> document_;
@@ -253,6 +262,8 @@ class Studio {
   Layout layout_;
   std::string status_;
   bool status_is_error_ = false;
+  bool status_window_open_ = false;  ///< the whole status text in a window
+  bool status_window_due_ = false;   ///< an error not yet shown: open the window if it is cut
   std::filesystem::path recovery_candidate_;
   std::string open_path_input_, save_path_input_;
   bool show_open_dialog_ = false, show_save_as_dialog_ = false, confirm_close_ = false;

@@ -7,6 +7,7 @@
 #include <string_view>
 
 #include "reconfig/common/input_error.h"
+#include "reconfig/common/read_input_file.h"
 
 namespace reconfig::collision {
 namespace {
@@ -107,8 +108,7 @@ std::vector<CcdQuery> parse_ccd_queries(std::istream& in, const std::string& fil
 }
 
 std::vector<CcdQuery> read_ccd_queries(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path.string(), "", "cannot open the file");
+  std::istringstream in(read_input_file(path));  // a regular file of at most 1 GiB
   return parse_ccd_queries(in, path.string());
 }
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 
 #include "reconfig/collision/consolidate.h"
+#include "reconfig/collision/tolerance_scale.h"
+#include "reconfig/common/input_error.h"
 
 namespace reconfig::collision {
 
@@ -15,6 +17,9 @@ CollisionResult detect_collisions(const scene::Reconfigurable& scene, const Coll
   std::vector<int> transitions = request.transitions;
   if (transitions.empty())
     for (int i = 0; i < static_cast<int>(scene.transitions.size()); ++i) transitions.push_back(i);
+  if (const std::string problem = tolerance_scale_problem(scene, transitions, request.detector.tolerance);
+      !problem.empty())
+    throw InputError("", "collision.tolerance", problem);
   CollisionResult result;
   const BodyTrees trees = build_body_trees(scene);
   for (std::size_t i = 0; i < transitions.size(); ++i) {

@@ -63,9 +63,9 @@ bool SpacetimeDetector::detect(const scene::Reconfigurable& scene, const BodyTre
   });
   contacts_.clear();
   containments_.clear();
-  std::vector<PairRange> work;
-  for (int a = 0; a < n; ++a)
-    for (int b = a + 1; b < n; ++b) work.push_back({a, b, 0.0, 1.0});
+  std::vector<PairRange> work;  // the pairs that may meet: memory linear in them, not in n²
+  for (const detail::TraversalRange& r : detail::candidate_pairs(trees, proxies_, scene, options_))
+    work.push_back({r.a, r.b, r.t0, r.t1});
   if (!traverse(scene, trees, work, {}, callbacks)) return false;
   valid_ = true;
   return true;

@@ -9,18 +9,18 @@
 #include <cctype>
 #include <cmath>
 #include <exception>
-#include <fstream>
-#include <iterator>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "geometry/detail/check_gltf.h"
 #include "geometry/detail/read_obj.h"
 #include "geometry/detail/read_off.h"
 #include "geometry/detail/read_ply.h"
 #include "geometry/detail/weld_vertices.h"
 #include "reconfig/common/input_error.h"
+#include "reconfig/common/read_input_file.h"
 
 namespace reconfig::geometry {
 namespace {
@@ -133,14 +133,6 @@ std::optional<Mesh> read_own_format(const std::string& extension, const std::str
   return out;
 }
 
-std::string read_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path.string(), "", "cannot open the file");
-  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) throw InputError(path.string(), "", "read failed");
-  return bytes;
-}
-
 /// One importer per thread: building one sets up all of Assimp's importers, which costs more
 /// than reading a small file.
 Assimp::Importer& thread_importer() {
@@ -164,27 +156,33 @@ Mesh read_scene(Assimp::Importer& importer, const aiScene* scene) {
 
 }  // namespace
 
-Mesh load_mesh(const std::filesystem::path& path) {
-  std::error_code error;
-  if (!std::filesystem::exists(path, error)) throw InputError(path.string(), "", "file not found");
-  if (std::filesystem::is_directory(path, error)) throw InputError(path.string(), "", "is a folder, not a mesh file");
+Mesh load_mesh(const std::filesystem::path& path, const MeshLoadOptions& options) {
   try {
     const std::string extension = lower_extension(path.extension().string());
-    if (is_own_format(extension)) return *read_own_format(extension, read_file(path));
+    const std::string bytes = read_input_file(path);
+    if (is_own_format(extension)) return *read_own_format(extension, bytes);
     Assimp::Importer& importer = thread_importer();
+    if (!detail::looks_like_gltf(extension, bytes))  // from the bytes read: the file is read once
+      return read_scene(importer, importer.ReadFileFromMemory(bytes.data(), bytes.size(), kImportFlags, extension.c_str()));
+    // A glTF's buffers may lie in other files, which Assimp reads after the checks.
+    detail::check_gltf(bytes, std::filesystem::absolute(path).parent_path(), options.allow_outside_paths);
     return read_scene(importer, importer.ReadFile(path.string(), kImportFlags));
   } catch (const InputError& e) {
-    throw e.in_file(path.string());
+    throw e.file().empty() ? e.in_file(path.string()) : e;
   } catch (const std::exception& e) {
     throw InputError(path.string(), "", std::string("could not read mesh: ") + e.what());
   }
 }
 
-Mesh load_mesh_from_memory(const std::string& bytes, const std::string& extension_hint) {
+Mesh load_mesh_from_memory(const std::string& bytes, const std::string& extension_hint,
+                          const MeshLoadOptions& options) {
   if (bytes.empty()) throw InputError("", "", "empty file");
   const std::string hint = lower_extension(extension_hint);
   try {
     if (auto mesh = read_own_format(hint, bytes)) return *mesh;
+    // Assimp reads the files a glTF in memory refers to from the working folder.
+    if (detail::looks_like_gltf(hint, bytes))
+      detail::check_gltf(bytes, std::filesystem::current_path(), options.allow_outside_paths);
     Assimp::Importer& importer = thread_importer();
     return read_scene(importer, importer.ReadFileFromMemory(bytes.data(), bytes.size(), kImportFlags, hint.c_str()));
   } catch (const InputError&) {

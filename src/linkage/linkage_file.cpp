@@ -1,13 +1,13 @@
 #include "reconfig/linkage/linkage_file.h"
 
 #include <cmath>
-#include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <set>
-#include <sstream>
 
+#include "common/detail/strict_json.h"
 #include "reconfig/common/input_error.h"
+#include "reconfig/common/read_input_file.h"
 #include "reconfig/common/write_atomically.h"
 #include "reconfig/linkage/joint_order.h"
 #include "reconfig/linkage/motion_range.h"
@@ -36,6 +36,14 @@ struct Parser {
     return value.get<std::string>();
   }
 
+  /// A name is printed by the tools: no control characters (terminal escape sequences).
+  std::string name_value(const json& value, const std::string& location) const {
+    std::string name = string_value(value, location);
+    for (const char c : name)
+      if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) fail(location, "a name must not contain control characters");
+    return name;
+  }
+
   Eigen::Vector2d point(const json& value, const std::string& location) const {
     if (!value.is_array() || value.size() != 2) fail(location, "expected a point [x, y]");
     Eigen::Vector2d p;
@@ -58,15 +66,16 @@ struct Parser {
   Linkage parse(const std::string& text) const {
     json doc;
     try {
-      doc = json::parse(text);
-    } catch (const json::exception& error) {  // parse_error, and out_of_range for huge numbers
-      fail("", std::string("not valid JSON: ") + error.what());
+      doc = reconfig::detail::parse_strict_json(text);
+    } catch (const InputError& error) {
+      fail(error.location(), error.message());
     }
     if (!doc.is_object()) fail("", "expected a JSON object");
     if (string_value(member(doc, "format", ""), "format") != "reconfig-linkage")
       fail("format", "expected \"reconfig-linkage\"");
     const json& version = member(doc, "version", "");
-    if (!version.is_number_integer() || version.get<int>() != 1) fail("version", "unsupported version (expected 1)");
+    if (!version.is_number_integer() || version != 1)  // as a number: 2^32 + 1 is no 1
+      fail("version", "unsupported version: " + reconfig::detail::describe_json(version) + " (expected 1)");
 
     Linkage linkage;
     const json& joints = member(doc, "joints", "");
@@ -77,7 +86,7 @@ struct Parser {
       const json& entry = joints[j];
       if (!entry.is_object()) fail(at, "expected an object");
       Joint joint;
-      joint.name = string_value(member(entry, "name", at), at + ".name");
+      joint.name = name_value(member(entry, "name", at), at + ".name");
       if (joint.name.empty()) fail(at + ".name", "empty joint name");
       if (!names.insert(joint.name).second) fail(at + ".name", "duplicate joint name \"" + joint.name + "\"");
       joint.position = point(member(entry, "position", at), at + ".position");
@@ -132,7 +141,7 @@ struct Parser {
         const json& entry = (*it)[t];
         if (!entry.is_object()) fail(at, "expected an object {\"name\", \"joint\"}");
         TrackingPoint point;
-        point.name = string_value(member(entry, "name", at), at + ".name");
+        point.name = name_value(member(entry, "name", at), at + ".name");
         point.joint = joint_ref(linkage, member(entry, "joint", at), at + ".joint");
         linkage.tracking_points.push_back(point);
       }
@@ -183,11 +192,7 @@ void check_linkage(const Linkage& linkage) {
 }
 
 Linkage read_linkage(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path.string(), "", "cannot open the file");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  Linkage linkage = parse_linkage(buffer.str(), path.string());
+  Linkage linkage = parse_linkage(read_input_file(path), path.string());
   try {
     check_linkage(linkage);
   } catch (const InputError& error) {

@@ -3,18 +3,19 @@
 #include <fmt/format.h>
 
 #include <cctype>
-#include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
 #include "reconfig/common/input_error.h"
+#include "reconfig/common/inside_folder.h"
+#include "reconfig/common/read_input_file.h"
 #include "reconfig/common/write_atomically.h"
 #include "reconfig/geometry/load_mesh.h"
 #include "reconfig/geometry/mesh_check.h"
 #include "reconfig/geometry/save_mesh.h"
 #include "reconfig/linkage/linkage_file.h"
 #include "reconfig/scene/linkage_drive.h"
+#include "common/detail/strict_json.h"
 #include "reconfig/scene/validate_scene.h"
 #include "scene/detail/json_cursor.h"
 
@@ -39,21 +40,39 @@ motion::Pose read_pose(const JsonCursor& c) {
 /// Loads each distinct mesh file once, even when several parts share it.
 class MeshCache {
  public:
+  explicit MeshCache(const SceneLoadOptions& options) : options_{options.allow_outside_paths} {}
+
   const geometry::Mesh& get(const fs::path& path, const JsonCursor& where) {
     auto it = meshes_.find(path);
     if (it != meshes_.end()) return it->second;
     try {
-      return meshes_.emplace(path, geometry::load_mesh(path)).first->second;
+      return meshes_.emplace(path, geometry::load_mesh(path, options_)).first->second;
     } catch (const InputError& error) {
       where.fail(error.what());
     }
   }
 
  private:
+  geometry::MeshLoadOptions options_;
   std::map<fs::path, geometry::Mesh> meshes_;
 };
 
-Part read_part(const JsonCursor& c, const fs::path& base_dir, MeshCache& meshes) {
+/// The file a path written at `c` names, relative to `base_dir`, which it must not leave
+/// unless `options` allow it.
+fs::path referenced_file(const JsonCursor& c, const fs::path& base_dir, const SceneLoadOptions& options) {
+  const std::string written = c.as_string();
+  if (!options.allow_outside_paths) {
+    try {
+      if (const std::string problem = outside_folder_problem(base_dir, written); !problem.empty()) c.fail(problem);
+    } catch (const InputError& error) {
+      if (!error.location().empty()) throw;
+      c.fail(error.message());
+    }
+  }
+  return (base_dir / written).lexically_normal();
+}
+
+Part read_part(const JsonCursor& c, const fs::path& base_dir, const SceneLoadOptions& options, MeshCache& meshes) {
   c.expect_object({"name", "mesh", "box", "cylinder", "sphere", "color", "center"});
   Part part;
   part.name = c["name"].as_name();
@@ -62,7 +81,7 @@ Part read_part(const JsonCursor& c, const fs::path& base_dir, MeshCache& meshes)
   if (sources != 1) c.fail("a part needs exactly one of \"mesh\", \"box\", \"cylinder\", \"sphere\"");
   if (c.has("mesh")) {
     const JsonCursor mesh = c["mesh"];
-    const fs::path path = (base_dir / mesh.as_string()).lexically_normal();
+    const fs::path path = referenced_file(mesh, base_dir, options);
     part.source = MeshFile{path};
     part.mesh = meshes.get(path, mesh);
     geometry::MeshCheckOptions quick;
@@ -74,17 +93,18 @@ Part read_part(const JsonCursor& c, const fs::path& base_dir, MeshCache& meshes)
     if (c.has("box")) {
       const JsonCursor box = c["box"];
       box.expect_object({"size"});
-      const Eigen::Vector3d size = box["size"].as_vector3();
-      if ((size.array() <= 0).any()) box["size"].fail("box sizes must be positive");
+      const JsonCursor sizes = box["size"];
+      sizes.expect_array(3);
+      const Eigen::Vector3d size(sizes[0].as_length(), sizes[1].as_length(), sizes[2].as_length());
       part.source = BoxPrimitive{size};
     } else if (c.has("cylinder")) {
       const JsonCursor cylinder = c["cylinder"];
       cylinder.expect_object({"radius", "height"});
-      part.source = CylinderPrimitive{cylinder["radius"].as_positive(), cylinder["height"].as_positive()};
+      part.source = CylinderPrimitive{cylinder["radius"].as_length(), cylinder["height"].as_length()};
     } else {
       const JsonCursor sphere = c["sphere"];
       sphere.expect_object({"radius"});
-      part.source = SpherePrimitive{sphere["radius"].as_positive()};
+      part.source = SpherePrimitive{sphere["radius"].as_length()};
     }
     part.mesh = Part::primitive_mesh(part.source);
   }
@@ -169,9 +189,12 @@ linkage::Linkage read_drive_linkage(const JsonCursor& c, const fs::path& base_di
   if (c.has("file")) {
     const JsonCursor file = c["file"];
     const std::string relative = file.as_string();
+    // A linkage file may lie anywhere (examples share theirs from a sibling folder): its content
+    // becomes joint positions, never mesh data a design could export.
     const fs::path path = (base_dir / relative).lexically_normal();
     drive.file = path;
-    if (!fs::exists(path)) file.fail(fmt::format("linkage file \"{}\" not found", relative));
+    std::error_code unresolved;  // a symbolic link loop: read_linkage says so
+    if (!fs::exists(path, unresolved) && !unresolved) file.fail(fmt::format("linkage file \"{}\" not found", relative));
     try {
       return linkage::read_linkage(path);
     } catch (const InputError& error) {
@@ -260,18 +283,20 @@ CollisionSettings read_collision_settings(const JsonCursor& c) {
   return settings;
 }
 
-Reconfigurable read_scene(const JsonCursor& root, const fs::path& base_dir) {
+Reconfigurable read_scene(const JsonCursor& root, const fs::path& base_dir, const SceneLoadOptions& options) {
   root.expect_object({"format", "version", "units", "parts", "states", "transitions", "collision"});
   if (root["format"].as_string() != kFormat)
     root["format"].fail(fmt::format("expected \"{}\"", kFormat));
   const JsonCursor version = root["version"];
-  if (!version.value().is_number_integer() || version.value().get<int>() != kVersion)
-    version.fail(fmt::format("unsupported version {} (this build reads version {})", version.value().dump(), kVersion));
+  if (!version.value().is_number_integer() || version.value() != kVersion)  // as a number: 2^32 + 1 is no 1
+    version.fail(fmt::format("unsupported version: {} (this build reads version {})",
+                             reconfig::detail::describe_json(version.value()), kVersion));
   Reconfigurable scene;
   if (root.has("units")) scene.units = root["units"].as_name();
-  MeshCache meshes;
+  MeshCache meshes(options);
   const JsonCursor parts = root["parts"];
-  for (std::size_t i = 0, n = parts.expect_array(); i < n; ++i) scene.parts.push_back(read_part(parts[i], base_dir, meshes));
+  for (std::size_t i = 0, n = parts.expect_array(); i < n; ++i)
+    scene.parts.push_back(read_part(parts[i], base_dir, options, meshes));
   const JsonCursor states = root["states"];
   for (std::size_t i = 0, n = states.expect_array(); i < n; ++i) scene.states.push_back(read_state(states[i]));
   if (root.has("transitions")) {
@@ -371,30 +396,23 @@ ordered_json drive_json(const LinkageDrive& drive, const fs::path& base_dir) {
 
 }  // namespace
 
-Reconfigurable parse_scene(const std::string& json_text, const fs::path& base_dir, const std::string& file_label) {
+Reconfigurable parse_scene(const std::string& json_text, const fs::path& base_dir, const std::string& file_label,
+                           const SceneLoadOptions& options) {
   nlohmann::json document;
   try {
-    document = nlohmann::json::parse(json_text);
-  } catch (const nlohmann::json::exception& error) {  // parse_error, and out_of_range for a number like 1e999
-    // nlohmann's message reads "[json.exception.parse_error.101] parse error at line 3, column 5: ..."
-    std::string message = error.what();
-    const auto at = message.find("] ");
-    if (at != std::string::npos) message = message.substr(at + 2);
-    throw InputError(file_label, "", "malformed JSON: " + message);
+    document = reconfig::detail::parse_strict_json(json_text);
+  } catch (const InputError& error) {
+    throw error.in_file(file_label);
   }
   try {
-    return read_scene(JsonCursor(document, ""), base_dir);
+    return read_scene(JsonCursor(document, ""), base_dir, options);
   } catch (const InputError& error) {
     throw error.in_file(file_label);
   }
 }
 
-Reconfigurable load_scene(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(file.string(), "", fs::exists(file) ? "cannot read the file" : "file not found");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_scene(text.str(), fs::absolute(file).parent_path(), file.string());
+Reconfigurable load_scene(const fs::path& file, const SceneLoadOptions& options) {
+  return parse_scene(read_input_file(file), fs::absolute(file).parent_path(), file.string(), options);
 }
 
 std::string scene_to_json(const Reconfigurable& scene, const fs::path& base_dir) {

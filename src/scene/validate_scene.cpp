@@ -2,7 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <set>
 
 #include "reconfig/common/input_error.h"
@@ -21,18 +23,32 @@ std::string format_quaternion(const Eigen::Quaterniond& q) {
 // The checks below run on every edit, over the whole design: they take the JSON path of what
 // they check as a function (`path_of()`), which formats it only if the check fails.
 
+/// Returns the names (for lookups that stay fast with 10,000 parts).
 template <typename Named>
-void check_unique_names(const std::vector<Named>& items, const std::string& list) {
+std::set<std::string> check_unique_names(const std::vector<Named>& items, const std::string& list) {
   std::set<std::string> seen;
   for (std::size_t i = 0; i < items.size(); ++i) {
     const auto path = [&] { return fmt::format("{}[{}].name", list, i); };
     if (items[i].name.empty()) fail(path(), "name must not be empty");
     if (!seen.insert(items[i].name).second) fail(path(), fmt::format("duplicate name \"{}\"", items[i].name));
   }
+  return seen;
 }
 
-void check_finite(const Eigen::Vector3d& v, const auto& path_of) {
+/// Positions must be finite and within `limit` of the origin.
+void check_position(const Eigen::Vector3d& v, double limit, const auto& path_of) {
   if (!v.allFinite()) fail(path_of(), "coordinates must be finite numbers");
+  if (v.cwiseAbs().maxCoeff() > limit)
+    fail(path_of(), fmt::format("coordinate {:.6g} lies beyond {:.6g}: {:g} times the design's size, where precision "
+                                "is gone", v.cwiseAbs().maxCoeff(), limit, kMaxCoordinateRatio));
+}
+
+/// The largest |coordinate| a position may have: kMaxCoordinateRatio times the design's size.
+double position_limit(const Reconfigurable& scene) {
+  double size = 0;
+  for (const Part& part : scene.parts)
+    if (part.mesh.V.size() > 0) size = std::max(size, part.mesh.V.cwiseAbs().maxCoeff());
+  return size > 0 ? kMaxCoordinateRatio * size : std::numeric_limits<double>::infinity();
 }
 
 void check_unit(const Eigen::Quaterniond& q, const auto& path_of) {
@@ -74,7 +90,7 @@ void check_rotation_end(const Eigen::Quaterniond& q, const motion::Pose& pose, c
 
 /// `path_of()`: the track's JSON path.
 void check_track(const Track& track, const auto& path_of, const std::string& part, const State& from,
-                 const State& to, const PoseTolerance& tolerance) {
+                 const State& to, const PoseTolerance& tolerance, double limit) {
   const motion::Pose first = from.pose_of(part);
   const motion::Pose last = to.pose_of(part);
   if (const auto* screw = std::get_if<ScrewPosesTrack>(&track)) {
@@ -82,7 +98,7 @@ void check_track(const Track& track, const auto& path_of, const std::string& par
     if (screw->poses.empty()) fail(list(), "a screw track needs at least one key pose");
     check_times(screw->poses, list);
     for (std::size_t k = 0; k < screw->poses.size(); ++k) {
-      check_finite(screw->poses[k].pose.translation, [&] { return fmt::format("{}[{}].translation", list(), k); });
+      check_position(screw->poses[k].pose.translation, limit, [&] { return fmt::format("{}[{}].translation", list(), k); });
       check_unit(screw->poses[k].pose.rotation, [&] { return fmt::format("{}[{}].rotation", list(), k); });
     }
     const std::size_t n = screw->poses.size() - 1;
@@ -103,7 +119,7 @@ void check_track(const Track& track, const auto& path_of, const std::string& par
   for (std::size_t k = 0; k < keyed.translation.size(); ++k) {
     const auto& key = keyed.translation[k];
     for (const auto& [v, field] : {std::pair{key.point, "point"}, std::pair{key.in, "in"}, std::pair{key.out, "out"}})
-      check_finite(v, [&] { return fmt::format("{}[{}].{}", translation(), k, field); });
+      check_position(v, limit, [&] { return fmt::format("{}[{}].{}", translation(), k, field); });
   }
   for (std::size_t k = 0; k < keyed.rotation.size(); ++k)
     check_unit(keyed.rotation[k].rotation, [&] { return fmt::format("{}[{}].quaternion", rotation(), k); });
@@ -142,20 +158,21 @@ bool poses_match(const motion::Pose& a, const motion::Pose& b, const PoseToleran
 void validate_scene(const Reconfigurable& scene, const PoseTolerance& tolerance) {
   if (scene.units.empty()) fail("units", "units must not be empty");
   if (const std::string problem = scene.collision.problem(); !problem.empty()) fail("collision", problem);
-  check_unique_names(scene.parts, "parts");
+  const std::set<std::string> parts = check_unique_names(scene.parts, "parts");
   check_unique_names(scene.states, "states");
   check_unique_names(scene.transitions, "transitions");
+  const double limit = position_limit(scene);
   for (std::size_t i = 0; i < scene.parts.size(); ++i) {
     const Part& part = scene.parts[i];
     if (part.mesh.empty()) fail(fmt::format("parts[{}]", i), fmt::format("part \"{}\" has no triangles", part.name));
-    check_finite(part.center, [&] { return fmt::format("parts[{}].center", i); });
+    check_position(part.center, limit, [&] { return fmt::format("parts[{}].center", i); });
   }
   if (scene.states.empty() && !scene.transitions.empty()) fail("states", "transitions need states");
   for (std::size_t i = 0; i < scene.states.size(); ++i) {
     for (const auto& [name, pose] : scene.states[i].poses) {
       const auto path = [&] { return fmt::format("states[{}].poses.{}", i, name); };
-      if (scene.find_part(name) < 0) fail(path(), fmt::format("unknown part \"{}\"", name));
-      check_finite(pose.translation, [&] { return path() + ".translation"; });
+      if (!parts.contains(name)) fail(path(), fmt::format("unknown part \"{}\"", name));
+      check_position(pose.translation, limit, [&] { return path() + ".translation"; });
       check_unit(pose.rotation, [&] { return path() + ".rotation"; });
     }
   }
@@ -169,7 +186,7 @@ void validate_scene(const Reconfigurable& scene, const PoseTolerance& tolerance)
     if (transition.linkage) {
       for (std::size_t k = 0; k < transition.linkage->attach.size(); ++k) {
         const std::string& name = transition.linkage->attach[k].part;
-        if (scene.find_part(name) < 0)
+        if (!parts.contains(name))
           fail(fmt::format("{}.linkage.attach[{}].part", path_of(), k), fmt::format("unknown part \"{}\"", name));
       }
       if (const std::string part = edited_driven_part(transition); !part.empty())
@@ -178,13 +195,13 @@ void validate_scene(const Reconfigurable& scene, const PoseTolerance& tolerance)
                          "it again), not the part's track", part, transition.name));
     }
     for (const auto& [name, track] : transition.tracks)
-      if (scene.find_part(name) < 0)
+      if (!parts.contains(name))
         fail(fmt::format("{}.tracks.{}", path_of(), name), fmt::format("unknown part \"{}\"", name));
     for (const Part& part : scene.parts) {
       const auto track = transition.tracks.find(part.name);
       if (track != transition.tracks.end()) {
         check_track(track->second, [&] { return fmt::format("{}.tracks.{}", path_of(), part.name); }, part.name,
-                    scene.states[from], scene.states[to], tolerance);
+                    scene.states[from], scene.states[to], tolerance, limit);
       } else if (!poses_match(scene.states[from].pose_of(part.name), scene.states[to].pose_of(part.name), tolerance)) {
         fail(path_of() + ".tracks", fmt::format("part \"{}\" has no track but its pose differs between states \"{}\" and "
                                            "\"{}\"", part.name, transition.from, transition.to));

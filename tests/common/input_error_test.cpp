@@ -23,5 +23,25 @@ TEST(InputError, InFileKeepsLocationAndMessage) {
   EXPECT_STREQ(error.what(), "x.json: states[0]: unknown part");
 }
 
+TEST(InputError, ControlCharactersAreEscapedInWhat) {
+  const InputError error("", "parts[0].name", "unknown part \"\x1b[31mred\n\"");
+  EXPECT_STREQ(error.what(), "parts[0].name: unknown part \"\\x1b[31mred\\x0a\"");
+  EXPECT_EQ(error.message(), "unknown part \"\x1b[31mred\n\"");  // the accessors keep the data
+}
+
+TEST(InputError, EachPartIsBoundedInWhat) {
+  const std::string huge(50'000'000, '[');
+  const InputError error("f.json", huge, "unsupported version " + huge);
+  EXPECT_LT(std::string(error.what()).size(), 3 * kMaxInputErrorPart);
+  EXPECT_NE(std::string(error.what()).find("(50000020 characters in all)"), std::string::npos);
+}
+
+TEST(InputError, ACutNeverSplitsAUtf8Character) {
+  std::string text;
+  while (text.size() < 2 * kMaxInputErrorPart) text += "é";
+  const std::string shown = InputError("", "", text).what();
+  EXPECT_EQ(shown.substr(0, shown.find("…")).size() % 2, 0u) << "a split two-byte character";
+}
+
 }  // namespace
 }  // namespace reconfig

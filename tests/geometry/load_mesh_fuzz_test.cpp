@@ -5,11 +5,15 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <random>
 #include <string>
 #include <vector>
@@ -30,6 +34,23 @@ struct Seed {
   std::string extension;
   std::string bytes;
 };
+
+void append_u32(std::string& out, std::uint32_t value) {
+  for (int k = 0; k < 4; ++k) out.push_back(static_cast<char>(value >> (8 * k) & 0xff));
+}
+
+/// A GLB with `json` and `binary` as its chunks (each padded to 4 bytes).
+std::string glb(std::string json, std::string binary) {
+  while (json.size() % 4) json += ' ';
+  while (binary.size() % 4) binary += '\0';
+  std::string out = "glTF";
+  append_u32(out, 2);
+  append_u32(out, static_cast<std::uint32_t>(12 + 8 + json.size() + 8 + binary.size()));
+  append_u32(out, static_cast<std::uint32_t>(json.size()));
+  out += "JSON" + json;
+  append_u32(out, static_cast<std::uint32_t>(binary.size()));
+  return out + std::string("BIN\0", 4) + binary;
+}
 
 std::vector<Seed> seeds() {
   const Mesh box = make_box({1, 2, 3});
@@ -81,12 +102,16 @@ std::vector<Seed> seeds() {
                          (static_cast<unsigned char>(buffer[i + 1]) << 8) | static_cast<unsigned char>(buffer[i + 2]);
       for (int k = 3; k >= 0; --k) base64 += table[(n >> (6 * k)) & 63];
     }
-    out.push_back({"gltf", R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],
+    const auto gltf = [](const std::string& buffer) {
+      return R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],
 "nodes":[{"mesh":0,"translation":[5,0,0]}],"meshes":[{"primitives":[{"attributes":{"POSITION":0},"indices":1}]}],
-"buffers":[{"byteLength":72,"uri":"data:application/octet-stream;base64,)" + base64 + R"("}],
+"buffers":[{"byteLength":72)" + buffer + R"(}],
 "bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":48},{"buffer":0,"byteOffset":48,"byteLength":24}],
 "accessors":[{"bufferView":0,"componentType":5126,"count":4,"type":"VEC3","min":[0,0,0],"max":[1,1,1]},
-{"bufferView":1,"componentType":5123,"count":12,"type":"SCALAR"}]})"});
+{"bufferView":1,"componentType":5123,"count":12,"type":"SCALAR"}]})";
+    };
+    out.push_back({"gltf", gltf(R"(,"uri":"data:application/octet-stream;base64,)" + base64 + "\"")});
+    out.push_back({"glb", glb(gltf(""), buffer)});  // the same in a GLB's JSON and BIN chunks
   }
   return out;
 }
@@ -95,7 +120,11 @@ std::string mutate(const std::string& original, std::mt19937& rng) {
   static const std::vector<std::string> tokens = {"-1",   "0",    "4294967295", "99999999999", "1e308", "-1e400",
                                                   "nan",  "inf",  "#",          "\n",          " ",     "/",
                                                   "f",    "v",    "3",          "255",         "-",     ".",
-                                                  "\0",   "end_header\n", "endsolid", "facet normal", "OFF", "vn"};
+                                                  "\0",   "end_header\n", "endsolid", "facet normal", "OFF", "vn",
+                                                  // glTF: URIs out of the folder, deep nesting, node cycles, lengths
+                                                  "../",  "/etc/passwd", "%2e%2e/", "data:,", "\"uri\":\"../x.bin\",",
+                                                  "[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[",
+                                                  "\"children\":[0],", "4294967280", "glTF"};
   return reconfig::testing::mutate_text(original, rng, tokens);
 }
 
@@ -161,6 +190,63 @@ TEST(LoadMeshFuzz, WrongExtensionHintsAreHandled) {
       expect_mesh_or_input_error(seed.bytes, hint, trial++);
       if (::testing::Test::HasFailure()) return;
     }
+}
+
+/// 72 bytes: a tetrahedron of edge `size` (float positions), then its uint16 indices.
+std::string tetrahedron_buffer(float size) {
+  const float positions[12] = {0, 0, 0, size, 0, 0, 0, size, 0, 0, 0, size};
+  const std::uint16_t indices[12] = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3};
+  std::string buffer(reinterpret_cast<const char*>(positions), sizeof positions);
+  return buffer.append(reinterpret_cast<const char*>(indices), sizeof indices);
+}
+
+/// glTF buffer URIs made of hostile pieces (FIFOs, devices, loops, links out, `..`, absolute and
+/// percent-encoded paths) never hang or crash, and a buffer outside the glTF's folder is never
+/// read unless allowed.
+TEST(LoadMeshFuzz, HostileBufferUrisNeverHangOrLeaveTheFolder) {
+  namespace fs = std::filesystem;
+  const fs::path root = reconfig::testing::fresh_temp_dir();
+  const fs::path dir = root / "design";
+  fs::create_directories(dir / "sub");
+  std::ofstream(dir / "sub" / "in.bin", std::ios::binary) << tetrahedron_buffer(1);
+  std::ofstream(root / "out.bin", std::ios::binary) << tetrahedron_buffer(10);
+  ASSERT_EQ(::mkfifo((dir / "fifo.bin").c_str(), 0600), 0);
+  fs::create_symlink("/dev/zero", dir / "zero.bin");
+  fs::create_symlink("loop.bin", dir / "loop.bin");
+  fs::create_symlink("..", dir / "sub" / "up");
+  fs::create_symlink(root / "out.bin", dir / "link.bin");
+  const std::vector<std::string> pieces = {"..", ".", "sub", "up", "in.bin", "out.bin", "fifo.bin", "zero.bin",
+                                           "loop.bin", "link.bin", "%2e%2e", "%2F", "", "design", "/dev/urandom",
+                                           root.string(), "sub/in.bin", "sub/up/out.bin", "../out.bin", "missing.bin"};
+  std::mt19937 rng(static_cast<unsigned>(reconfig::testing::fuzz_setting("RECONFIG_FUZZ_SEED", 25)));
+  const int trials = reconfig::testing::fuzz_setting("RECONFIG_FUZZ_TRIALS", 400);
+  int loaded = 0, outside = 0;
+  const auto start = std::chrono::steady_clock::now();
+  for (int trial = 0; trial < trials; ++trial) {
+    std::string uri;
+    for (int k = 0, n = 1 + static_cast<int>(rng() % 3); k < n; ++k) uri += (k ? "/" : "") + pieces[rng() % pieces.size()];
+    const fs::path file = dir / "m.gltf";
+    std::ofstream(file) << R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],
+"meshes":[{"primitives":[{"attributes":{"POSITION":0},"indices":1}]}],"buffers":[{"byteLength":72,"uri":")" +
+                               uri + R"("}],
+"bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":48},{"buffer":0,"byteOffset":48,"byteLength":24}],
+"accessors":[{"bufferView":0,"componentType":5126,"count":4,"type":"VEC3"},
+{"bufferView":1,"componentType":5123,"count":12,"type":"SCALAR"}]})";
+    const bool allowed = rng() % 4 == 0;
+    try {
+      const Mesh mesh = load_mesh(file, {.allow_outside_paths = allowed});
+      ++loaded;
+      const bool from_outside = mesh.V.maxCoeff() > 5;
+      outside += from_outside;
+      EXPECT_TRUE(allowed || !from_outside) << "read a buffer outside the folder through \"" << uri << "\"";
+    } catch (const InputError& error) {
+      EXPECT_LT(std::string(error.what()).size(), 3 * kMaxInputErrorPart);
+    }
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::printf("[ fuzz     ] %d hostile buffer URIs in %.2f s: %d loaded, %d of them from outside (allowed)\n", trials,
+              seconds, loaded, outside);
+  EXPECT_GT(loaded, 0);
 }
 
 }  // namespace

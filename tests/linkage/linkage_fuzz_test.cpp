@@ -27,7 +27,7 @@ std::string mutate(std::string text, std::mt19937& rng) {
   const int edits = 1 + static_cast<int>(rng() % 4);
   for (int e = 0; e < edits && !text.empty(); ++e) {
     const std::size_t at = rng() % text.size();
-    switch (rng() % 4) {
+    switch (rng() % 5) {
       case 0: text[at] = kAlphabet[rng() % kAlphabet.size()]; break;
       case 1: text.erase(at, 1 + rng() % 8); break;
       case 2: text.insert(at, 1, kAlphabet[rng() % kAlphabet.size()]); break;
@@ -36,6 +36,7 @@ std::string mutate(std::string text, std::mt19937& rng) {
         text.insert(rng() % text.size(), text.substr(at, length));
         break;
       }
+      case 4: text.insert(at, 1 + rng() % 100'000, "[{"[rng() % 2]); break;  // deep nesting
     }
   }
   return text;

@@ -29,6 +29,8 @@ struct CollisionResult {
 };
 
 /// Detects every collision of every requested transition.
+/// @throws InputError at `collision.tolerance` if the tolerance is too fine for the size of
+///   the moving parts (tolerance_scale.h): refused at once rather than minutes of time steps
 CollisionResult detect_collisions(const scene::Reconfigurable& scene, const CollisionRequest& request = {});
 
 }  // namespace reconfig::collision

@@ -9,6 +9,11 @@
 
 namespace reconfig::geometry {
 
+struct MeshLoadOptions {
+  /// Let a glTF's buffer and image URIs lead outside its own folder (absolute paths, `..`).
+  bool allow_outside_paths = false;
+};
+
 /// Reads the triangle mesh in `path`: OBJ, OFF and PLY with our own readers, every other
 /// format (STL, glTF/GLB, and whatever else Assimp reads) with Assimp.
 ///
@@ -36,10 +41,15 @@ namespace reconfig::geometry {
 ///
 /// @param path  the file; the format is chosen from its extension, then its content
 /// @return the mesh (#V×3 positions, #F×3 triangles with indices in [0, #V))
+/// Hostile files are refused before Assimp sees them: only regular files of at most
+/// `kMaxInputFileBytes` are read (read_input_file.h); a glTF or GLB must declare no more data
+/// than it has, keep its node tree within 256 levels and its buffer and image URIs inside its
+/// folder (docs/file-formats.md, "Limits").
+///
 /// @throws InputError naming `path` if the file is missing or unreadable, the format is unknown
 ///   or malformed (Assimp's message), there are no triangles, a face refers to a vertex that
 ///   does not exist (`face <i>`), or a coordinate is NaN or infinite (`vertex <i>`).
-Mesh load_mesh(const std::filesystem::path& path);
+Mesh load_mesh(const std::filesystem::path& path, const MeshLoadOptions& options = {});
 
 /// Same as `load_mesh`, from the bytes of a file held in memory (formats whose data is spread
 /// over several files, such as glTF with an external .bin, need `load_mesh`).
@@ -47,6 +57,7 @@ Mesh load_mesh(const std::filesystem::path& path);
 /// @param bytes           the file's content
 /// @param extension_hint  the file's extension, with or without the dot ("obj", ".stl", "glb")
 /// @throws InputError (with an empty file name) as `load_mesh`
-Mesh load_mesh_from_memory(const std::string& bytes, const std::string& extension_hint);
+Mesh load_mesh_from_memory(const std::string& bytes, const std::string& extension_hint,
+                          const MeshLoadOptions& options = {});
 
 }  // namespace reconfig::geometry

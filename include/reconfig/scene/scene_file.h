@@ -9,15 +9,26 @@
 
 namespace reconfig::scene {
 
+struct SceneLoadOptions {
+  /// Let mesh paths (and a glTF mesh's URIs) lead outside the scene's folder: absolute paths,
+  /// `..` out of it, symbolic links out of it (`--allow-outside-paths`). Linkage files may lie
+  /// anywhere: they give joint positions, never mesh data a design could export.
+  bool allow_outside_paths = false;
+};
+
 /// Loads a scene file and the meshes it references (relative to the file), builds primitive
 /// parts, computes centers of mass and validates the whole design (validate_scene.h).
+/// Only a regular file of at most `kMaxInputFileBytes` is read, and the meshes it refers to
+/// must lie in its folder or below unless `options` allow otherwise (docs/file-formats.md,
+/// "Limits").
 /// @throws InputError naming the file and the JSON path of the first problem
-Reconfigurable load_scene(const std::filesystem::path& file);
+Reconfigurable load_scene(const std::filesystem::path& file, const SceneLoadOptions& options = {});
 
-/// Parses scene JSON text. Mesh paths are resolved against `base_dir`; errors name `file_label`.
+/// Parses scene JSON text. Mesh paths are resolved against `base_dir` (and must stay inside
+/// it, unless `options` allow otherwise); errors name `file_label`.
 /// @throws InputError
 Reconfigurable parse_scene(const std::string& json_text, const std::filesystem::path& base_dir,
-                           const std::string& file_label);
+                           const std::string& file_label, const SceneLoadOptions& options = {});
 
 /// The scene as JSON text (2-space indented). Mesh paths are written relative to `base_dir`.
 std::string scene_to_json(const Reconfigurable& scene, const std::filesystem::path& base_dir);

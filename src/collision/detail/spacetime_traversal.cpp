@@ -15,6 +15,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <numeric>
 #include <span>
 #include <tuple>
 
@@ -914,6 +915,36 @@ bool run_traversal(const Traversal<family>& tr, const std::vector<ContactHint>& 
 }
 
 }  // namespace
+
+std::vector<TraversalRange> candidate_pairs(const BodyTrees& trees, const std::vector<PartProxy>& proxies,
+                                            const scene::Reconfigurable& scene, const DetectorOptions& options) {
+  const double pad = rounding_pad(scene, proxies);
+  std::vector<TraversalRange> pairs;
+  const auto run = [&]<DopFamily family>() {
+    const int n = static_cast<int>(proxies.size());
+    std::vector<Kdop<family>> sweeps;
+    sweeps.reserve(n);
+    for (int p = 0; p < n; ++p)  // as traverse_ranges bounds a range [0, 1]
+      sweeps.push_back(sweep_bound<family>(proxies[p], *trees[p], 0.0, 1.0, pad,
+                                           options.conservative ? proxies[p].deviation : 0.0));
+    std::vector<int> order(n);
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(), [&](int x, int y) { return sweeps[x].lo[0] < sweeps[y].lo[0]; });
+    for (int i = 0; i < n; ++i)
+      for (int j = i + 1; j < n && sweeps[order[j]].lo[0] <= sweeps[order[i]].hi[0]; ++j)
+        if (sweeps[order[i]].overlaps(sweeps[order[j]]))
+          pairs.push_back({std::min(order[i], order[j]), std::max(order[i], order[j]), 0.0, 1.0});
+  };
+  switch (options.dop) {
+    case DopFamily::k8: run.template operator()<DopFamily::k8>(); break;
+    case DopFamily::k28: run.template operator()<DopFamily::k28>(); break;
+    case DopFamily::k80: run.template operator()<DopFamily::k80>(); break;
+  }
+  std::sort(pairs.begin(), pairs.end(), [](const TraversalRange& x, const TraversalRange& y) {
+    return std::tie(x.a, x.b) < std::tie(y.a, y.b);
+  });
+  return pairs;
+}
 
 bool traverse_ranges(const scene::Reconfigurable& scene, const BodyTrees& trees, const std::vector<PartProxy>& proxies,
                      const DetectorOptions& options, const std::vector<TraversalRange>& ranges,

@@ -20,6 +20,13 @@ struct TraversalRange {
   double t0 = 0, t1 = 1;
 };
 
+/// The pairs of parts (a < b) over [0, 1] whose sweeps over the whole transition may meet —
+/// the bound `traverse_ranges` tests each range with first — found by a sweep and prune along
+/// the bounds' first axis: time and memory grow with the parts and the pairs found, not with
+/// the square of the parts (10,000 parts: 5e7 pairs). Sorted by (a, b).
+std::vector<TraversalRange> candidate_pairs(const BodyTrees& trees, const std::vector<PartProxy>& proxies,
+                                            const scene::Reconfigurable& scene, const DetectorOptions& options);
+
 /// A pair of triangles (of parts a < b) that was in contact at time t in an earlier result.
 struct ContactHint {
   int part_a = 0, triangle_a = 0;

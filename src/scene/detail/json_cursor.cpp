@@ -52,6 +52,8 @@ std::string JsonCursor::as_string() const {
 std::string JsonCursor::as_name() const {
   std::string name = as_string();
   if (name.empty()) fail("name must not be empty");
+  for (const char c : name)
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) fail("a name must not contain control characters");
   return name;
 }
 
@@ -65,6 +67,12 @@ double JsonCursor::as_number() const {
 double JsonCursor::as_positive() const {
   const double x = as_number();
   if (!(x > 0)) fail(fmt::format("must be positive, found {}", x));
+  return x;
+}
+
+double JsonCursor::as_length() const {
+  const double x = as_positive();
+  if (x > kMaxPrimitiveSize) fail(fmt::format("must be at most {:g}, found {:g}", kMaxPrimitiveSize, x));
   return x;
 }
 

@@ -11,6 +11,9 @@
 
 namespace reconfig::scene::detail {
 
+/// The largest size of a box, cylinder or sphere (docs/file-formats.md, "Limits").
+inline constexpr double kMaxPrimitiveSize = 1e12;
+
 class JsonCursor {
  public:
   JsonCursor(const nlohmann::json& value, std::string path) : value_(value), path_(std::move(path)) {}
@@ -32,10 +35,12 @@ class JsonCursor {
   std::size_t expect_array(std::ptrdiff_t size = -1) const;
 
   std::string as_string() const;
-  /// A non-empty name.
+  /// A non-empty name without control characters (the tools print names).
   std::string as_name() const;
   double as_number() const;  ///< finite number
   double as_positive() const;
+  /// A primitive's size: positive and at most `kMaxPrimitiveSize`.
+  double as_length() const;
   bool as_bool() const;
   Eigen::Vector3d as_vector3() const;
   /// `[w, x, y, z]`, unit within 1e-3, returned normalized.
