@@ -19,6 +19,7 @@ namespace {
 
 struct ResolveOptions {
   std::string scene;
+  scene::SceneLoadOptions load;
   std::string transition;
   std::string hint_part;
   bool automatic = false;
@@ -122,7 +123,7 @@ int run_auto(const scene::Reconfigurable& scene, int transition, const ResolveOp
 }
 
 int run_resolve(const ResolveOptions& options) {
-  const scene::Reconfigurable scene = scene::load_scene(options.scene);
+  const scene::Reconfigurable scene = scene::load_scene(options.scene, options.load);
   const int transition = scene.find_transition(options.transition);
   if (transition < 0) throw InputError(options.scene, "", fmt::format("no transition named \"{}\"", options.transition));
   return options.automatic ? run_auto(scene, transition, options) : run_hint(scene, transition, options);
@@ -150,6 +151,7 @@ void add_resolve_command(CLI::App& app, int& exit_code) {
       ->capture_default_str()
       ->needs(automatic);
   command->add_flag("--json", options->json, "Print the result as JSON");
+  add_allow_outside_paths_flag(*command, options->load);
   command->callback([command, options, &exit_code] {
     if (!command->count("--hint") && !options->automatic)
       throw InputError("", "", "resolve needs --hint PART or --auto -o OUT.json");
