@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "command.h"
+#include "interrupt_guard.h"
 #include "progress_bar.h"
 #include "reconfig/collision/detect_collisions.h"
 #include "reconfig/collision/detector_settings.h"
@@ -220,11 +221,17 @@ int run_check(const CheckOptions& options) {
     transitions.push_back(index);
   }
   ProgressBar bar("checking", !options.json && stderr_is_terminal());
+  const InterruptGuard interrupt;
   const auto start = std::chrono::steady_clock::now();
-  CheckOutcome outcome = options.reference ? run_reference(scene, options, transitions, bar.callback())
-                                           : run_engine(scene, options, transitions, bar.callback());
+  const ProgressCallback progress = interrupt.wrap(bar.callback());
+  CheckOutcome outcome = options.reference ? run_reference(scene, options, transitions, progress)
+                                           : run_engine(scene, options, transitions, progress);
   outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   bar.finish();
+  if (interrupt.interrupted()) {
+    fmt::print(stderr, "reconfig: check cancelled (Ctrl+C): no result\n");
+    return kExitInterrupted;
+  }
   if (options.energy) outcome.energies = interval_energies(scene, outcome.transitions);
   const nlohmann::ordered_json json = to_json(scene, outcome);
   if (options.json) fmt::print("{}\n", json.dump(2));

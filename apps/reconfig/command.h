@@ -14,6 +14,7 @@ enum ExitCode : int {
   kExitOk = 0,          ///< success; for `check`: collision-free
   kExitCollisions = 1,  ///< `check` found collisions
   kExitBadInput = 2,    ///< bad input: missing file, malformed data, bad arguments
+  kExitInterrupted = 130,  ///< Ctrl+C stopped a long command (`check`): no result
 };
 
 /// Registers a subcommand on `app`. Its callback runs the command and stores the process

@@ -3,8 +3,10 @@
 
 #include <gtest/gtest.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -76,6 +78,32 @@ TEST(HostileInputsCli, AToleranceTooFineForTheDesignIsRefusedAtOnce) {
       << run.err;
   EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5));  // minutes before
   EXPECT_EQ(run_reconfig("check --tolerance 100 " + scene.string()).exit_code, 0);
+}
+
+TEST(HostileInputsCli, CtrlCStopsALongCheckCleanly) {
+  // A beam 1e5 long turning there and back at 1 mm: 1.6 s of time steps, within the tolerance rule.
+  const fs::path scene = testing::fresh_temp_dir() / "long.json";
+  std::ofstream(scene) << R"({"format": "reconfig-scene", "version": 1, "units": "m",
+    "parts": [{"name": "beam", "box": {"size": [1e5, 0.05, 0.5]}}, {"name": "post", "box": {"size": [0.1, 0.1, 1]}}],
+    "states": [{"name": "a", "poses": {"post": {"translation": [0, 1, 0]}}},
+               {"name": "b", "poses": {"post": {"translation": [0, 1, 0]},
+                                       "beam": {"rotation": [0.70710678118654757, 0, 0, 0.70710678118654757]}}}],
+    "transitions": [{"name": "turn", "from": "a", "to": "b", "tracks": {"beam": {"rotation": [
+      {"time": 0, "quaternion": [1, 0, 0, 0]}, {"time": 1, "quaternion": [0.70710678118654757, 0, 0, 0.70710678118654757]}]}}},
+                    {"name": "back", "from": "b", "to": "a", "tracks": {"beam": {"rotation": [
+      {"time": 0, "quaternion": [0.70710678118654757, 0, 0, 0.70710678118654757]}, {"time": 1, "quaternion": [1, 0, 0, 0]}]}}}]})";
+  const fs::path err = scene.parent_path() / "err.txt";
+  const std::string command = "timeout --preserve-status -s INT 0.3 " + (testing::binary_dir() / "bin" / "reconfig").string() +
+                              " check " + scene.string() + " > /dev/null 2> " + err.string();
+  const auto start = std::chrono::steady_clock::now();
+  const int status = std::system(command.c_str());
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::ifstream in(err);
+  const std::string message((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  ASSERT_TRUE(WIFEXITED(status)) << "killed by a signal, not stopped: " << message;
+  EXPECT_EQ(WEXITSTATUS(status), 130) << message;
+  EXPECT_NE(message.find("check cancelled (Ctrl+C): no result"), std::string::npos) << message;
+  EXPECT_LT(seconds, 2.0);
 }
 
 }  // namespace
