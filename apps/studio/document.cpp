@@ -129,7 +129,9 @@ std::string Document::autosave_if_due(Clock::time_point now, std::chrono::millis
 }
 
 fs::path Document::autosave_path(const fs::path& file) {
-  return file.parent_path() / ("." + file.filename().string() + ".autosave");
+  // Appended, not `"." + …`: GCC 12 warns (-Wrestrict) about the insertion at the front that
+  // `const char* + std::string&&` may do, a false positive (GCC bug 105651).
+  return file.parent_path() / std::string(".").append(file.filename().string()).append(".autosave");
 }
 
 bool Document::has_recovery(const fs::path& file) {
