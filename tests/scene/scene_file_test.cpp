@@ -192,7 +192,7 @@ INSTANTIATE_TEST_SUITE_P(
                  [](json& d) {
                    d["transitions"][0]["tracks"]["lid"]["rotation"][0]["quaternion"] = {0.7071, 0.7071, 0, 0};
                  },
-                 "transitions[0].tracks.lid.rotation[0].quaternion", "state \"closed\""},
+                 "transitions[0].tracks.lid.rotation[0]", "state \"closed\""},
         BadInput{"part without track moves",
                  [](json& d) { d["states"][1]["poses"]["ball"] = {{"translation", {1, 0, 0}}}; },
                  "transitions[0].tracks", "has no track"},
