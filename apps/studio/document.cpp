@@ -20,7 +20,7 @@ std::unique_ptr<Document> Document::open(const fs::path& file, collision::Collis
 std::unique_ptr<Document> Document::recover(const fs::path& file, collision::CollisionServiceOptions options) {
   const fs::path autosave = autosave_path(fs::absolute(file));
   auto document = std::make_unique<Document>(scene::load_scene(autosave), fs::absolute(file), options);
-  document->modified_ = true;
+  document->saved_step_.reset();
   return document;
 }
 
@@ -85,7 +85,9 @@ std::string Document::execute(std::unique_ptr<scene::Command> command) {
     return error.what();
   }
   publish(std::move(next), dirty);
-  modified_ = autosave_pending_ = true;
+  if (saved_step_ > step_) saved_step_.reset();  // the saved version was undone and is now replaced
+  ++step_;
+  autosave_pending_ = true;
   return "";
 }
 
@@ -97,7 +99,9 @@ bool Document::step_history(bool forward) {
   auto next = std::make_shared<scene::Reconfigurable>(*scene_);
   const scene::DirtySet dirty = forward ? history_.redo(*next) : history_.undo(*next);
   publish(std::move(next), dirty);
-  modified_ = autosave_pending_ = true;
+  step_ += forward ? 1 : -1;
+  autosave_pending_ = modified();
+  if (!modified()) discard_autosave();  // back to the saved version: nothing to recover
   return true;
 }
 
@@ -109,7 +113,12 @@ void Document::save_as(const fs::path& file) {
   scene::save_scene(*next, file);
   scene_ = std::move(next);
   file_ = fs::absolute(file);
-  modified_ = autosave_pending_ = false;
+  saved_step_ = step_;
+  discard_autosave();
+}
+
+void Document::discard_autosave() {
+  autosave_pending_ = false;
   std::error_code ignored;
   fs::remove(autosave_path(file_), ignored);
 }

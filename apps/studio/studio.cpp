@@ -84,6 +84,11 @@ void Studio::request_close() {
   else quit_ = true;
 }
 
+void Studio::discard_and_quit() {
+  if (document_) document_->discard_autosave();
+  quit_ = true;
+}
+
 void Studio::frame(std::chrono::steady_clock::time_point now) {
   const double dt = last_frame_ ? std::chrono::duration<double>(now - *last_frame_).count() : 0.0;
   last_frame_ = now;
@@ -400,7 +405,7 @@ void Studio::draw_modals() {
     }
     ImGui::SameLine();
     if (ImGui::Button("Discard")) {
-      quit_ = true;
+      discard_and_quit();
       ImGui::CloseCurrentPopup();
     }
     ImGui::SameLine();

@@ -76,6 +76,8 @@ class Studio {
   bool quit_requested() const { return quit_; }
   /// The window's close button: quits at once when nothing is unsaved, else asks.
   void request_close();
+  /// Quits without saving (the question's Discard): the unsaved edits and their autosave go.
+  void discard_and_quit();
 
   // ---- actions (what clicks and keys do; scripts call them too) --------------------------
   void open_transition(int transition);
