@@ -13,6 +13,7 @@
 #include <chrono>
 #include <filesystem>
 #include <memory>
+#include <numbers>
 #include <optional>
 #include <string>
 #include <vector>
@@ -121,6 +122,9 @@ class Studio {
   const std::string& status() const { return status_; }
   const Layout& layout() const { return layout_; }
   view::Camera& camera() { return camera_; }
+  /// How far a drag of one pixel turns the view (radians): 30° per 100 px, as Blender's orbit,
+  /// slow enough for fine work.
+  static constexpr double kOrbitPerPixel = 0.3 * std::numbers::pi / 180;
   /// The collision picture the UI shows this frame (null before a document is open).
   std::shared_ptr<const collision::CollisionSnapshot> collisions() const;
   /// The selected part's pose at the current time.

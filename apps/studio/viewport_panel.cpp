@@ -221,7 +221,7 @@ void Studio::handle_viewport_mouse(const ImVec2& origin, int width, int height) 
     const double world_per_pixel = 2 * camera_.distance * std::tan(camera_.fov_y / 2) / height;
     if (ImGui::IsMouseDragging(ImGuiMouseButton_Left, 2)) {
       if (io.KeyShift) camera_.pan(-io.MouseDelta.x * world_per_pixel, io.MouseDelta.y * world_per_pixel);
-      else camera_.orbit(-io.MouseDelta.x * 0.008, io.MouseDelta.y * 0.008);
+      else camera_.orbit(-io.MouseDelta.x * kOrbitPerPixel, io.MouseDelta.y * kOrbitPerPixel);
     }
     if (ImGui::IsMouseReleased(ImGuiMouseButton_Left)) {
       viewport_dragging_ = false;
@@ -229,7 +229,7 @@ void Studio::handle_viewport_mouse(const ImVec2& origin, int width, int height) 
     }
   }
   if (ImGui::IsItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Right, 2))
-    camera_.orbit(-io.MouseDelta.x * 0.008, io.MouseDelta.y * 0.008);
+    camera_.orbit(-io.MouseDelta.x * kOrbitPerPixel, io.MouseDelta.y * kOrbitPerPixel);
   if (ImGui::IsItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Middle, 2)) {
     const double world_per_pixel = 2 * camera_.distance * std::tan(camera_.fov_y / 2) / height;
     camera_.pan(-io.MouseDelta.x * world_per_pixel, io.MouseDelta.y * world_per_pixel);
