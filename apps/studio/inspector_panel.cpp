@@ -7,6 +7,7 @@
 #include <Eigen/Geometry>
 #include <cmath>
 
+#include "counted.h"
 #include "panel_window.h"
 #include "studio.h"
 
@@ -113,7 +114,7 @@ void Studio::draw_inspector() {
     ImGui::Separator();
     for (const auto& transition : snapshot->transitions) {
       if (transition.transition != active_transition_) continue;
-      ImGui::Text("%zu collision intervals%s", transition.intervals.size(),
+      ImGui::Text("%s%s", counted(transition.intervals.size(), "collision interval").c_str(),
                   transition.up_to_date ? "" : " (detecting...)");
       for (std::size_t i = 0; i < transition.intervals.size(); ++i) {
         const auto& interval = transition.intervals[i];

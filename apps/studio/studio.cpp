@@ -7,6 +7,7 @@
 #include <system_error>
 #include <thread>
 
+#include "counted.h"
 #include "keys.h"
 #include "panel_window.h"
 #include "reconfig/common/input_error.h"
@@ -77,6 +78,22 @@ void Studio::set_status(std::string message, bool error) {
 
 std::shared_ptr<const collision::CollisionSnapshot> Studio::collisions() const {
   return document_ ? document_->collisions().snapshot() : nullptr;
+}
+
+std::string Studio::collision_summary() const {
+  const auto snapshot = collisions();
+  if (!snapshot) return "";
+  if (!snapshot->complete || snapshot->version != document_->version()) {
+    std::size_t done = 0;
+    for (const auto& transition : snapshot->transitions)
+      done += transition.up_to_date && snapshot->version == document_->version();
+    return fmt::format("collisions: detecting... {} of {} done", done,
+                       counted(document_->scene().transitions.size(), "transition"));
+  }
+  std::size_t count = 0;
+  for (const auto& transition : snapshot->transitions) count += transition.intervals.size();
+  return fmt::format("collisions: {} in {}, up to date", counted(count, "interval"),
+                     counted(snapshot->transitions.size(), "transition"));
 }
 
 void Studio::request_close() {
@@ -327,21 +344,7 @@ void Studio::draw_status_bar() {
                    ImGuiWindowFlags_NoBringToFrontOnFocus);
   if (status_is_error_) ImGui::TextColored({0.8f, 0.1f, 0.1f, 1}, "%s", status_.c_str());
   else ImGui::TextUnformatted(status_.c_str());
-  if (const auto snapshot = collisions()) {
-    std::string line;
-    const bool current = snapshot->complete && snapshot->version == document_->version();
-    if (!current) {
-      std::size_t done = 0;
-      for (const auto& transition : snapshot->transitions)
-        done += transition.up_to_date && snapshot->version == document_->version();
-      line = fmt::format("collisions: detecting... {} of {} transitions done", done,
-                         document_->scene().transitions.size());
-    } else {
-      std::size_t count = 0;
-      for (const auto& transition : snapshot->transitions) count += transition.intervals.size();
-      line = fmt::format("collisions: {} intervals in {} transitions, up to date", count,
-                         snapshot->transitions.size());
-    }
+  if (const std::string line = collision_summary(); !line.empty()) {
     ImGui::SameLine(std::max(ImGui::GetWindowWidth() - ImGui::CalcTextSize(line.c_str()).x - 12, 300.0f));
     ImGui::TextUnformatted(line.c_str());
   }

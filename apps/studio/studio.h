@@ -127,6 +127,9 @@ class Studio {
   static constexpr double kOrbitPerPixel = 0.3 * std::numbers::pi / 180;
   /// The collision picture the UI shows this frame (null before a document is open).
   std::shared_ptr<const collision::CollisionSnapshot> collisions() const;
+  /// The status bar's collision line: "collisions: 2 intervals in 1 transition, up to date",
+  /// or how far detection is; empty before a document is open.
+  std::string collision_summary() const;
   /// The selected part's pose at the current time.
   std::optional<motion::Pose> selected_pose() const;
   /// The selected part's keyframed track in the open transition, or null.
