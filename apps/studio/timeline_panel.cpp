@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "fit_text.h"
 #include "panel_window.h"
 #include "studio.h"
 
@@ -91,8 +92,8 @@ void Studio::draw_timeline() {
   const ImU32 label = IM_COL32(70, 70, 80, 255);
   draw->AddText({cursor.x, scrub_y + 3}, label, "time");
   draw->AddText({cursor.x, bands_y + 3}, label, "collisions");
-  const std::string part_label = selected_part_ >= 0 ? scene.parts[selected_part_].name : "(no part)";
-  draw->AddText({cursor.x, translation_y + 3}, label, ("move  " + part_label).substr(0, 14).c_str());
+  const std::string move_label = selected_part_ >= 0 ? "move  " + scene.parts[selected_part_].name : "move";
+  draw->AddText({cursor.x, translation_y + 3}, label, fit_text(move_label, kLabelWidth - 4).c_str());
   draw->AddText({cursor.x, rotation_y + 3}, label, "rotate");
 
   // Scrub strip with ticks every 0.1.
@@ -100,7 +101,10 @@ void Studio::draw_timeline() {
   for (int i = 0; i <= 10; ++i) {
     const float x = x_of(i / 10.0);
     draw->AddLine({x, scrub_y + kRowHeight - 6}, {x, scrub_y + kRowHeight}, IM_COL32(110, 110, 120, 255));
-    draw->AddText({x + 2, scrub_y + 1}, IM_COL32(110, 110, 120, 255), fmt::format("{:.1f}", i / 10.0).c_str());
+    // Right of its tick, but the last one (1.0) left of it, inside the strip, not cut to "1.".
+    const std::string tick = fmt::format("{:.1f}", i / 10.0);
+    const float text_x = i < 10 ? x + 2 : x - ImGui::CalcTextSize(tick.c_str()).x - 2;
+    draw->AddText({text_x, scrub_y + 1}, IM_COL32(110, 110, 120, 255), tick.c_str());
   }
   ImGui::SetCursorScreenPos({x0, scrub_y});
   ImGui::InvisibleButton("##scrub", {width, kRowHeight});
