@@ -6,7 +6,9 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <optional>
 
+#include "axis_angle.h"
 #include "counted.h"
 #include "panel_window.h"
 #include "studio.h"
@@ -20,14 +22,15 @@ bool vector_field(const char* label, Eigen::Vector3d& value) {
   return ImGui::IsItemDeactivatedAfterEdit();
 }
 
-Eigen::Vector3d euler_degrees(const Eigen::Quaterniond& q) {
-  return q.toRotationMatrix().eulerAngles(2, 1, 0).reverse() * 180 / M_PI;  // x, y, z about fixed axes
-}
-
-Eigen::Quaterniond from_euler_degrees(const Eigen::Vector3d& degrees) {
-  const Eigen::Vector3d r = degrees * M_PI / 180;
-  return Eigen::AngleAxisd(r.z(), Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(r.y(), Eigen::Vector3d::UnitY()) *
-         Eigen::AngleAxisd(r.x(), Eigen::Vector3d::UnitX());
+/// The rotation `q` as an axis field and an angle field; the edited rotation once an edit of
+/// either is finished (and the axis is not zero).
+std::optional<Eigen::Quaterniond> rotation_fields(const char* axis_label, const char* angle_label,
+                                                  const Eigen::Quaterniond& q) {
+  AxisAngle shown = axis_angle_of(q);
+  bool edited = vector_field(axis_label, shown.axis);
+  ImGui::InputDouble(angle_label, &shown.degrees, 0, 0, "%.3f");
+  edited = ImGui::IsItemDeactivatedAfterEdit() || edited;
+  return edited ? rotation_of(shown) : std::nullopt;
 }
 
 }  // namespace
@@ -57,10 +60,9 @@ void Studio::draw_inspector() {
       edited.translation = translation;
       apply_pose(edited);
     }
-    Eigen::Vector3d angles = euler_degrees(pose->rotation);
-    if (vector_field("rotation °", angles)) {
+    if (const auto rotation = rotation_fields("rotation axis", "angle °", pose->rotation)) {
       motion::Pose edited = *pose;
-      edited.rotation = from_euler_degrees(angles);
+      edited.rotation = *rotation;
       apply_pose(edited);
     }
   }
@@ -83,9 +85,8 @@ void Studio::draw_inspector() {
                selected_key_->index < static_cast<int>(track->rotation.size())) {
       motion::RotationKey key = track->rotation[selected_key_->index];
       ImGui::Text("rotation key %d at t = %.3f", selected_key_->index, key.time);
-      Eigen::Vector3d angles = euler_degrees(key.rotation);
-      if (vector_field("angles °", angles)) {
-        key.rotation = from_euler_degrees(angles);
+      if (const auto rotation = rotation_fields("key axis", "key angle °", key.rotation)) {
+        key.rotation = *rotation;
         execute(scene::set_rotation_key(transition, part, selected_key_->index, key));
       }
     }
