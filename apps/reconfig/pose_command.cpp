@@ -77,7 +77,7 @@ void add_pose_command(CLI::App& app, int& exit_code) {
   command->add_option("--time", options->time, "Time in [0, 1]")->check(CLI::Range(0.0, 1.0))->needs(transition);
   auto* state = command->add_option("--state", options->state, "State name (instead of a transition and time)");
   transition->excludes(state);
-  command->add_option("-o,--output", options->output, "Output mesh (.obj or .stl)")->required();
+  command->add_option("-o,--output", options->output, "Output mesh: .obj (one named object per part) or .stl")->required();
   command->callback([options, &exit_code, transition, state] {
     if (transition->count() == 0 && state->count() == 0)
       throw InputError("", "", "give --transition NAME --time T, or --state NAME");
