@@ -164,6 +164,9 @@ class Studio {
   void render_viewport_image(int width, int height);
   void handle_viewport_mouse(const ImVec2& origin, int width, int height);
   void draw_gizmo(ImDrawList* draw, const ImVec2& origin, int width, int height);
+  /// Whether a collision box of the selected part is shown at the current time (the gizmo
+  /// then fades, so it does not hide the box).
+  bool selected_part_collides_now() const;
   /// The handle being dragged at its new place, over the picture (which shows the old one).
   void draw_handle_drag(ImDrawList* draw, const ImVec2& origin, int width, int height) const;
   view::Ray mouse_ray(const ImVec2& origin, int width, int height) const;
