@@ -7,9 +7,12 @@
 #include <Eigen/Geometry>
 #include <cmath>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "axis_angle.h"
 #include "counted.h"
+#include "interval_label.h"
 #include "panel_window.h"
 #include "studio.h"
 
@@ -119,9 +122,10 @@ void Studio::draw_inspector() {
                   transition.up_to_date ? "" : " (detecting...)");
       for (std::size_t i = 0; i < transition.intervals.size(); ++i) {
         const auto& interval = transition.intervals[i];
-        std::string parts;
-        for (const int p : interval.parts) parts += (parts.empty() ? "" : " × ") + scene.parts[p].name;
-        const std::string label = fmt::format("{:.3f}-{:.3f}  {}##ci{}", interval.t0, interval.t1, parts, i);
+        std::vector<std::string> parts;
+        for (const int p : interval.parts) parts.push_back(scene.parts[p].name);
+        const std::string label = fmt::format(
+            "{}##ci{}", interval_label(interval.t0, interval.t1, parts, ImGui::GetContentRegionAvail().x), i);
         if (ImGui::Selectable(label.c_str(), interval.t0 <= time_ && time_ <= interval.t1)) {
           playing_ = false;
           set_time(interval.t0);
