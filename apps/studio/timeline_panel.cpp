@@ -14,7 +14,7 @@
 namespace reconfig::studio {
 namespace {
 
-constexpr float kLabelWidth = 96;
+constexpr float kLabelWidth = 96;  ///< the row labels' column, at least; wider for long part names
 constexpr float kRowHeight = 20;
 constexpr float kDiamond = 6;
 
@@ -74,8 +74,14 @@ void Studio::draw_timeline() {
 
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const ImVec2 cursor = ImGui::GetCursorScreenPos();
-  const float width = std::max(ImGui::GetContentRegionAvail().x - kLabelWidth - 8, 50.0f);
-  const float x0 = cursor.x + kLabelWidth, x1 = x0 + width;
+  // Wide enough for "move  <part>" of the longest part name (the same whichever part is
+  // selected, so the strip does not shift), up to a quarter of the panel.
+  float label_width = kLabelWidth;
+  for (const scene::Part& part : scene.parts)
+    label_width = std::max(label_width, ImGui::CalcTextSize(("move  " + part.name).c_str()).x + 8);
+  label_width = std::min(label_width, std::max(kLabelWidth, ImGui::GetContentRegionAvail().x / 4));
+  const float width = std::max(ImGui::GetContentRegionAvail().x - label_width - 8, 50.0f);
+  const float x0 = cursor.x + label_width, x1 = x0 + width;
   const auto x_of = [&](double time) { return static_cast<float>(x0 + time * (x1 - x0)); };
   const auto t_of = [&](float x) { return std::clamp(static_cast<double>((x - x0) / (x1 - x0)), 0.0, 1.0); };
   const ImGuiIO& io = ImGui::GetIO();
@@ -93,7 +99,7 @@ void Studio::draw_timeline() {
   draw->AddText({cursor.x, scrub_y + 3}, label, "time");
   draw->AddText({cursor.x, bands_y + 3}, label, "collisions");
   const std::string move_label = selected_part_ >= 0 ? "move  " + scene.parts[selected_part_].name : "move";
-  draw->AddText({cursor.x, translation_y + 3}, label, fit_text(move_label, kLabelWidth - 4).c_str());
+  draw->AddText({cursor.x, translation_y + 3}, label, fit_text(move_label, label_width - 4).c_str());
   draw->AddText({cursor.x, rotation_y + 3}, label, "rotate");
 
   // Scrub strip with ticks every 0.1.
