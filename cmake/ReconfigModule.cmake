@@ -38,7 +38,10 @@ function(reconfig_add_tests name)
   add_executable(${name}_tests ${sources})
   target_link_libraries(${name}_tests PRIVATE ${ARG_DEPENDS} reconfig_testing GTest::gtest GTest::gtest_main)
   reconfig_set_warnings(${name}_tests)
+  # NO_PRETTY_VALUES: a parameterized test is named by its suite's name generator alone, not
+  # followed by GetParam()'s printout (a byte dump of a struct, with pointers, for most).
   gtest_discover_tests(${name}_tests
+    NO_PRETTY_VALUES
     WORKING_DIRECTORY ${CMAKE_SOURCE_DIR}
     PROPERTIES ENVIRONMENT "RECONFIG_SOURCE_DIR=${CMAKE_SOURCE_DIR};RECONFIG_BINARY_DIR=${CMAKE_BINARY_DIR}"
     DISCOVERY_TIMEOUT 60)

@@ -25,7 +25,7 @@ std::unique_ptr<Document> Document::recover(const fs::path& file, collision::Col
                                             const scene::SceneLoadOptions& load) {
   const fs::path autosave = autosave_path(fs::absolute(file));
   auto document = std::make_unique<Document>(scene::load_scene(autosave, load), fs::absolute(file), options);
-  document->modified_ = true;
+  document->saved_step_.reset();
   return document;
 }
 
@@ -90,7 +90,9 @@ std::string Document::execute(std::unique_ptr<scene::Command> command) {
     return error.what();
   }
   publish(std::move(next), dirty);
-  modified_ = autosave_pending_ = true;
+  if (saved_step_ > step_) saved_step_.reset();  // the saved version was undone and is now replaced
+  ++step_;
+  autosave_pending_ = true;
   return "";
 }
 
@@ -102,7 +104,9 @@ bool Document::step_history(bool forward) {
   auto next = std::make_shared<scene::Reconfigurable>(*scene_);
   const scene::DirtySet dirty = forward ? history_.redo(*next) : history_.undo(*next);
   publish(std::move(next), dirty);
-  modified_ = autosave_pending_ = true;
+  step_ += forward ? 1 : -1;
+  autosave_pending_ = modified();
+  if (!modified()) discard_autosave();  // back to the saved version: nothing to recover
   return true;
 }
 
@@ -114,7 +118,12 @@ void Document::save_as(const fs::path& file) {
   scene::save_scene(*next, file);
   scene_ = std::move(next);
   file_ = fs::absolute(file);
-  modified_ = autosave_pending_ = false;
+  saved_step_ = step_;
+  discard_autosave();
+}
+
+void Document::discard_autosave() {
+  autosave_pending_ = false;
   std::error_code ignored;
   fs::remove(autosave_path(file_), ignored);
 }
@@ -134,7 +143,9 @@ std::string Document::autosave_if_due(Clock::time_point now, std::chrono::millis
 }
 
 fs::path Document::autosave_path(const fs::path& file) {
-  return file.parent_path() / ("." + file.filename().string() + ".autosave");
+  // Appended, not `"." + …`: GCC 12 warns (-Wrestrict) about the insertion at the front that
+  // `const char* + std::string&&` may do, a false positive (GCC bug 105651).
+  return file.parent_path() / std::string(".").append(file.filename().string()).append(".autosave");
 }
 
 bool Document::has_recovery(const fs::path& file) {

@@ -42,8 +42,9 @@ class Document {
 
   const scene::Reconfigurable& scene() const { return *scene_; }
   const std::filesystem::path& file() const { return file_; }
-  /// Changed since it was opened or last saved.
-  bool modified() const { return modified_; }
+  /// Differs from the file as opened or last saved: undoing back to that version is clean
+  /// again. A recovered autosave is modified until saved.
+  bool modified() const { return saved_step_ != step_; }
 
   /// Applies `command` as one undoable step. A command the scene refuses (InputError) leaves
   /// everything as it was. @return "" on success, else the reason it was refused
@@ -68,6 +69,9 @@ class Document {
   static std::filesystem::path autosave_path(const std::filesystem::path& file);
   /// Whether `file` has an autosave newer than itself (unsaved work from a crash).
   static bool has_recovery(const std::filesystem::path& file);
+  /// Throws the unsaved edits away for good (closing with Discard): removes the autosave, so
+  /// that the next open does not offer to recover them.
+  void discard_autosave();
 
   /// The parts' rest meshes as shared objects (for drawing them GPU-resident): replaced only
   /// when an edit changes a part's geometry or the list of parts, so they outlive edits of
@@ -109,7 +113,10 @@ class Document {
   collision::CollisionServiceOptions service_options_;  ///< those of `service_`
   std::unique_ptr<collision::CollisionService> service_;
   std::uint64_t version_ = 0;
-  bool modified_ = false;
+  /// Steps of the history applied (edits and redos minus undos), and that count when the file
+  /// was last saved (none: the saved version is no longer reachable by undo and redo).
+  int step_ = 0;
+  std::optional<int> saved_step_ = 0;
   bool autosave_pending_ = false;
   std::optional<Clock::time_point> last_autosave_;  ///< by the caller's clock; none before the first call
 };

@@ -15,6 +15,7 @@
 #include "reconfig/render/egl_context.h"
 #include "reconfig/render/image.h"
 #include "reconfig/render/render_target.h"
+#include "key_queue.h"
 #include "studio.h"
 
 namespace reconfig::studio {
@@ -34,7 +35,8 @@ struct SimulatedInput {
   ImVec2 mouse{-1, -1};
   bool buttons[3] = {false, false, false};  ///< left, right, middle
   float wheel = 0;                          ///< consumed by the next frame
-  std::set<int> keys_down;
+  std::set<int> keys_down;                  ///< held for as long as they are in the set
+  KeyQueue key_events;                      ///< presses and releases as a window gets them, any number per frame
   bool ctrl = false, shift = false, alt = false;
 };
 
@@ -65,6 +67,7 @@ class HeadlessFrontend {
   render::RenderTarget frame_;
   std::unique_ptr<Studio> studio_;
   SimulatedInput input_;
+  std::set<int> queued_down_;  ///< keys down by the replayed `input_.key_events`
   int width_, height_;
   std::chrono::steady_clock::time_point clock_;
 };

@@ -6,6 +6,7 @@
 #include <backends/imgui_impl_opengl3.h>
 
 #include "frontend.h"
+#include "key_queue.h"
 #include "keys.h"
 #include "reconfig/render/glfw_window.h"
 #include "reconfig/render/image.h"
@@ -19,11 +20,26 @@ static_assert(keys::kSpace == GLFW_KEY_SPACE && keys::kI == GLFW_KEY_I && keys::
                   keys::kO == GLFW_KEY_O,
               "keys.h must use GLFW's key codes");
 
+namespace {
+
+KeyQueue* g_key_queue = nullptr;  // the open window's (one at a time)
+
+/// Queues GLFW's key events instead of handing them to ImGui at once (key_queue.h); key
+/// repeats are ImGui's own business (it repeats held keys itself).
+void queue_key(GLFWwindow*, int key, int scancode, int action, int mods) {
+  if (g_key_queue && action != GLFW_REPEAT) g_key_queue->push({key, action == GLFW_PRESS, scancode, mods});
+}
+
+}  // namespace
+
 void run_in_window(StudioOptions options, const std::optional<std::filesystem::path>& scene, int width, int height,
                    int frames, const std::filesystem::path& screenshot) {
   render::GlfwWindow window("Reconfig Studio", width, height);
   UiContext ui;
   ImGui_ImplGlfw_InitForOpenGL(window.handle(), true);
+  KeyQueue key_queue;
+  g_key_queue = &key_queue;
+  glfwSetKeyCallback(window.handle(), queue_key);  // in place of the backend's, which it replays
   {
     Studio studio(std::move(options));
     if (scene) studio.open(*scene);
@@ -34,6 +50,9 @@ void run_in_window(StudioOptions options, const std::optional<std::filesystem::p
         window.cancel_close();
         studio.request_close();
       }
+      for (const KeyEvent& event : key_queue.take_frame())
+        ImGui_ImplGlfw_KeyCallback(window.handle(), event.key, event.scancode, event.down ? GLFW_PRESS : GLFW_RELEASE,
+                                   event.mods);
       ImGui_ImplOpenGL3_NewFrame();
       ImGui_ImplGlfw_NewFrame();
       ImGui::NewFrame();
@@ -57,6 +76,7 @@ void run_in_window(StudioOptions options, const std::optional<std::filesystem::p
       if (next != title) window.set_title(title = next);
     }
   }
+  g_key_queue = nullptr;  // (the backend's shutdown restores the callbacks it found)
   ImGui_ImplGlfw_Shutdown();
 }
 

@@ -45,8 +45,13 @@ double HeadlessFrontend::run_frame() {
   for (int b = 0; b < 3; ++b) io.MouseDown[b] = input_.buttons[b];
   io.MouseWheel = input_.wheel;
   input_.wheel = 0;
+  for (const KeyEvent& event : input_.key_events.take_frame()) {
+    if (event.down) queued_down_.insert(event.key);
+    else queued_down_.erase(event.key);
+  }
   for (bool& down : io.KeysDown) down = false;
   for (const int key : input_.keys_down) io.KeysDown[key] = true;
+  for (const int key : queued_down_) io.KeysDown[key] = true;
   io.KeyCtrl = input_.ctrl;
   io.KeyShift = input_.shift;
   io.KeyAlt = input_.alt;

@@ -6,7 +6,13 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <optional>
+#include <string>
+#include <vector>
 
+#include "axis_angle.h"
+#include "counted.h"
+#include "interval_label.h"
 #include "panel_window.h"
 #include "studio.h"
 
@@ -19,14 +25,15 @@ bool vector_field(const char* label, Eigen::Vector3d& value) {
   return ImGui::IsItemDeactivatedAfterEdit();
 }
 
-Eigen::Vector3d euler_degrees(const Eigen::Quaterniond& q) {
-  return q.toRotationMatrix().eulerAngles(2, 1, 0).reverse() * 180 / M_PI;  // x, y, z about fixed axes
-}
-
-Eigen::Quaterniond from_euler_degrees(const Eigen::Vector3d& degrees) {
-  const Eigen::Vector3d r = degrees * M_PI / 180;
-  return Eigen::AngleAxisd(r.z(), Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(r.y(), Eigen::Vector3d::UnitY()) *
-         Eigen::AngleAxisd(r.x(), Eigen::Vector3d::UnitX());
+/// The rotation `q` as an axis field and an angle field; the edited rotation once an edit of
+/// either is finished (and the axis is not zero).
+std::optional<Eigen::Quaterniond> rotation_fields(const char* axis_label, const char* angle_label,
+                                                  const Eigen::Quaterniond& q) {
+  AxisAngle shown = axis_angle_of(q);
+  bool edited = vector_field(axis_label, shown.axis);
+  ImGui::InputDouble(angle_label, &shown.degrees, 0, 0, "%.3f");
+  edited = ImGui::IsItemDeactivatedAfterEdit() || edited;
+  return edited ? rotation_of(shown) : std::nullopt;
 }
 
 }  // namespace
@@ -56,10 +63,9 @@ void Studio::draw_inspector() {
       edited.translation = translation;
       apply_pose(edited);
     }
-    Eigen::Vector3d angles = euler_degrees(pose->rotation);
-    if (vector_field("rotation °", angles)) {
+    if (const auto rotation = rotation_fields("rotation axis", "angle °", pose->rotation)) {
       motion::Pose edited = *pose;
-      edited.rotation = from_euler_degrees(angles);
+      edited.rotation = *rotation;
       apply_pose(edited);
     }
   }
@@ -82,9 +88,8 @@ void Studio::draw_inspector() {
                selected_key_->index < static_cast<int>(track->rotation.size())) {
       motion::RotationKey key = track->rotation[selected_key_->index];
       ImGui::Text("rotation key %d at t = %.3f", selected_key_->index, key.time);
-      Eigen::Vector3d angles = euler_degrees(key.rotation);
-      if (vector_field("angles °", angles)) {
-        key.rotation = from_euler_degrees(angles);
+      if (const auto rotation = rotation_fields("key axis", "key angle °", key.rotation)) {
+        key.rotation = *rotation;
         execute(scene::set_rotation_key(transition, part, selected_key_->index, key));
       }
     }
@@ -114,13 +119,14 @@ void Studio::draw_inspector() {
     ImGui::Separator();
     for (const auto& transition : snapshot->transitions) {
       if (transition.transition != active_transition_) continue;
-      ImGui::Text("%zu collision intervals%s", transition.intervals.size(),
+      ImGui::Text("%s%s", counted(transition.intervals.size(), "collision interval").c_str(),
                   transition.up_to_date ? "" : " (detecting...)");
       for (std::size_t i = 0; i < transition.intervals.size(); ++i) {
         const auto& interval = transition.intervals[i];
-        std::string parts;
-        for (const int p : interval.parts) parts += (parts.empty() ? "" : " × ") + scene.parts[p].name;
-        const std::string label = fmt::format("{:.3f}-{:.3f}  {}##ci{}", interval.t0, interval.t1, parts, i);
+        std::vector<std::string> parts;
+        for (const int p : interval.parts) parts.push_back(scene.parts[p].name);
+        const std::string label = fmt::format(
+            "{}##ci{}", interval_label(interval.t0, interval.t1, parts, ImGui::GetContentRegionAvail().x), i);
         if (ImGui::Selectable(label.c_str(), interval.t0 <= time_ && time_ <= interval.t1)) {
           playing_ = false;
           set_time(interval.t0);

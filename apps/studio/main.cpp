@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <chrono>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -25,11 +26,24 @@ using namespace reconfig;
 struct Options {
   std::string scene, screenshot, script, frame_times, size = "1280x800";
   int frames = 0;
-  bool headless = false, window = false, ghosts = false;
+  bool headless = false, window = false, ghosts = false, no_wait = false;
   double time = -1;
   studio::StudioOptions studio;
   int dop = collision::halfspace_count(collision::DetectorOptions{}.dop);
 };
+
+/// Saves the frame as `file`, first (when `wait`) running frames until the collision picture
+/// describes the design, as a script's `wait-collisions` does; says on stdout what it shows.
+void save_screenshot(studio::HeadlessFrontend& frontend, const std::string& file, bool wait) {
+  constexpr auto kTimeout = std::chrono::seconds(60);
+  const bool detect = wait && frontend.studio().document();
+  const bool detected = detect && frontend.run_until_collisions_current(kTimeout);
+  if (detect && !detected)
+    std::cerr << fmt::format("reconfig-studio: collision detection did not finish within {} s; the screenshot shows "
+                             "it unfinished\n", kTimeout.count());
+  render::write_png(file, frontend.screenshot());
+  std::cout << fmt::format("wrote {}{}\n", file, detected ? " (collisions detected)" : "");
+}
 
 int run_headless(const Options& options, int width, int height) {
   studio::HeadlessFrontend frontend(width, height, options.studio);
@@ -58,7 +72,7 @@ int run_headless(const Options& options, int width, int height) {
     }
   }
   for (int i = 0; i < options.frames; ++i) times.push_back(frontend.run_frame());
-  if (!options.screenshot.empty()) render::write_png(options.screenshot, frontend.screenshot());
+  if (!options.screenshot.empty()) save_screenshot(frontend, options.screenshot, !options.no_wait);
   if (!options.frame_times.empty() && !times.empty()) {
     const studio::FrameTimes stats = studio::summarize_frame_times(times);
     write_atomically(options.frame_times, [&](std::ostream& out) {
@@ -80,7 +94,9 @@ int main(int argc, char** argv) {
   app.add_flag("--headless", options.headless, "no window: draw through EGL offscreen");
   app.add_flag("--window", options.window, "a window even with --frames/--screenshot (checks the window path)");
   app.add_option("--size", options.size, "window or image size WIDTHxHEIGHT")->capture_default_str();
-  app.add_option("--screenshot", options.screenshot, "save the last frame as PNG and exit (headless)");
+  app.add_option("--screenshot", options.screenshot,
+                 "save the last frame as PNG and exit (headless), once collision detection has finished");
+  app.add_flag("--no-wait", options.no_wait, "take the --screenshot at once, while collisions may still be detected");
   app.add_option("--frames", options.frames, "frames to run before the screenshot (headless)");
   app.add_option("--script", options.script, "replay UI actions from this file (headless); see docs/studio.md");
   app.add_option("--frame-times", options.frame_times, "write frame time statistics of --frames as JSON");

@@ -215,7 +215,13 @@ class Runner {
       if (args.empty()) fail("click-part needs a part name");
       const int part = scene().find_part(args[0]);
       if (part < 0) fail(fmt::format("no part \"{}\"", args[0]));
-      click(part_point(part));
+      const ImVec2 at = part_point(part);
+      click(at);
+      const int picked = studio().selected_part();
+      if (picked != part)
+        fail(fmt::format("click-part {}: the click at ({:.0f}, {:.0f}) selected {} ({})", args[0], at.x, at.y,
+                         picked < 0 ? "nothing" : scene().parts[picked].name,
+                         picked < 0 ? "the part is not drawn there" : "it is in front of the part"));
     } else if (action == "click-edge") {
       if (args.empty()) fail("click-edge needs a transition name");
       const auto at = studio().graph_edge_point(transition_named(args[0]));
@@ -276,8 +282,8 @@ class Runner {
     }
   }
 
-  /// A pixel where part `part` is visible: the projected vertex nearest the camera of the ones
-  /// whose pick ray hits this part first, else its projected center.
+  /// Where part `part`'s center (the mean of its posed vertices) is drawn; another part may be
+  /// in front of it there, which `click-part` reports.
   ImVec2 part_point(int part) {
     const Eigen::MatrixX3d V = studio().active_transition() >= 0
                                    ? scene().posed_vertices(studio().active_transition(), part, studio().time())

@@ -75,6 +75,7 @@ void Studio::draw_state_graph() {
   const GraphGeometry geometry = graph_geometry(scene, min, max);
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const auto snapshot = collisions();
+  const ImU32 plate = ImGui::GetColorU32(ImGuiCol_WindowBg);
 
   for (int k = 0; k < static_cast<int>(scene.transitions.size()); ++k) {
     const scene::Transition& transition = scene.transitions[k];
@@ -91,6 +92,12 @@ void Studio::draw_state_graph() {
       draw->AddBezierQuadratic(a, {2 * m.x - (a.x + b.x) / 2, 2 * m.y - (a.y + b.y) / 2}, b, color,
                                active ? 3.0f : 1.5f);
     }
+  }
+  // Badges and labels after every edge, the labels on plates of the panel's colour: no edge is
+  // drawn through a label.
+  for (int k = 0; k < static_cast<int>(scene.transitions.size()); ++k) {
+    const scene::Transition& transition = scene.transitions[k];
+    const ImVec2 m = geometry.badges[k];
     // Collision badge.
     const collision::TransitionSnapshot* current = nullptr;
     if (snapshot)
@@ -104,7 +111,10 @@ void Studio::draw_state_graph() {
     const std::string text = known ? fmt::format("{}", count) : "...";
     const ImVec2 size = ImGui::CalcTextSize(text.c_str());
     draw->AddText({m.x - size.x / 2, m.y - size.y / 2}, IM_COL32(255, 255, 255, 255), text.c_str());
-    draw->AddText({m.x + 14, m.y - size.y / 2}, color, transition.name.c_str());
+    const ImVec2 name_size = ImGui::CalcTextSize(transition.name.c_str()), at{m.x + 14, m.y - name_size.y / 2};
+    draw->AddRectFilled({at.x - 2, at.y - 1}, {at.x + name_size.x + 2, at.y + name_size.y + 1}, plate, 3);
+    draw->AddText(at, k == active_transition_ ? IM_COL32(20, 40, 110, 255) : IM_COL32(60, 60, 70, 255),
+                  transition.name.c_str());
   }
   for (int s = 0; s < static_cast<int>(scene.states.size()); ++s) {
     const ImVec2 p = geometry.nodes[s];

@@ -8,6 +8,7 @@
 #include <thread>
 #include <utility>
 
+#include "counted.h"
 #include "keys.h"
 #include "panel_window.h"
 #include "reconfig/common/input_error.h"
@@ -100,9 +101,30 @@ std::shared_ptr<const collision::CollisionSnapshot> Studio::collisions() const {
   return document_ ? document_->collisions().snapshot() : nullptr;
 }
 
+std::string Studio::collision_summary() const {
+  const auto snapshot = collisions();
+  if (!snapshot) return "";
+  if (!snapshot->complete || snapshot->version != document_->version()) {
+    std::size_t done = 0;
+    for (const auto& transition : snapshot->transitions)
+      done += transition.up_to_date && snapshot->version == document_->version();
+    return fmt::format("collisions: detecting... {} of {} done", done,
+                       counted(document_->scene().transitions.size(), "transition"));
+  }
+  std::size_t count = 0;
+  for (const auto& transition : snapshot->transitions) count += transition.intervals.size();
+  return fmt::format("collisions: {} in {}, up to date", counted(count, "interval"),
+                     counted(snapshot->transitions.size(), "transition"));
+}
+
 void Studio::request_close() {
   if (document_ && document_->modified()) confirm_close_ = true;
   else quit_ = true;
+}
+
+void Studio::discard_and_quit() {
+  if (document_) document_->discard_autosave();
+  quit_ = true;
 }
 
 void Studio::frame(std::chrono::steady_clock::time_point now) {
@@ -360,22 +382,7 @@ void Studio::draw_status_bar() {
   ImGui::Begin("##status", nullptr,
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
                    ImGuiWindowFlags_NoBringToFrontOnFocus);
-  std::string line;
-  if (const auto snapshot = collisions()) {
-    const bool current = snapshot->complete && snapshot->version == document_->version();
-    if (!current) {
-      std::size_t done = 0;
-      for (const auto& transition : snapshot->transitions)
-        done += transition.up_to_date && snapshot->version == document_->version();
-      line = fmt::format("collisions: detecting... {} of {} transitions done", done,
-                         document_->scene().transitions.size());
-    } else {
-      std::size_t count = 0;
-      for (const auto& transition : snapshot->transitions) count += transition.intervals.size();
-      line = fmt::format("collisions: {} intervals in {} transitions, up to date", count,
-                         snapshot->transitions.size());
-    }
-  }
+  const std::string line = collision_summary();
   // The status gets the room left of the collision line; a longer one is cut, and its whole
   // text is a click away (an error opens it by itself).
   const float line_x = std::max(ImGui::GetWindowWidth() - ImGui::CalcTextSize(line.c_str()).x - 12, 300.0f);
@@ -465,7 +472,7 @@ void Studio::draw_modals() {
     }
     ImGui::SameLine();
     if (ImGui::Button("Discard")) {
-      quit_ = true;
+      discard_and_quit();
       ImGui::CloseCurrentPopup();
     }
     ImGui::SameLine();

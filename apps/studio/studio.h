@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <future>
 #include <memory>
+#include <numbers>
 #include <optional>
 #include <string>
 #include <vector>
@@ -86,6 +87,8 @@ class Studio {
   bool quit_requested() const { return quit_; }
   /// The window's close button: quits at once when nothing is unsaved, else asks.
   void request_close();
+  /// Quits without saving (the question's Discard): the unsaved edits and their autosave go.
+  void discard_and_quit();
 
   // ---- actions (what clicks and keys do; scripts call them too) --------------------------
   void open_transition(int transition);
@@ -158,8 +161,14 @@ class Studio {
   bool status_window_open() const { return status_window_open_; }
   const Layout& layout() const { return layout_; }
   view::Camera& camera() { return camera_; }
+  /// How far a drag of one pixel turns the view (radians): 30° per 100 px, as Blender's orbit,
+  /// slow enough for fine work.
+  static constexpr double kOrbitPerPixel = 0.3 * std::numbers::pi / 180;
   /// The collision picture the UI shows this frame (null before a document is open).
   std::shared_ptr<const collision::CollisionSnapshot> collisions() const;
+  /// The status bar's collision line: "collisions: 2 intervals in 1 transition, up to date",
+  /// or how far detection is; empty before a document is open.
+  std::string collision_summary() const;
   /// The selected part's pose at the current time.
   std::optional<motion::Pose> selected_pose() const;
   /// The selected part's keyframed track in the open transition, or null.
@@ -200,6 +209,9 @@ class Studio {
   void render_viewport_image(int width, int height);
   void handle_viewport_mouse(const ImVec2& origin, int width, int height);
   void draw_gizmo(ImDrawList* draw, const ImVec2& origin, int width, int height);
+  /// Whether a collision box of the selected part is shown at the current time (the gizmo
+  /// then fades, so it does not hide the box).
+  bool selected_part_collides_now() const;
   /// The handle being dragged at its new place, over the picture (which shows the old one).
   void draw_handle_drag(ImDrawList* draw, const ImVec2& origin, int width, int height) const;
   view::Ray mouse_ray(const ImVec2& origin, int width, int height) const;

@@ -7,13 +7,14 @@
 #include <algorithm>
 #include <cmath>
 
+#include "fit_text.h"
 #include "panel_window.h"
 #include "studio.h"
 
 namespace reconfig::studio {
 namespace {
 
-constexpr float kLabelWidth = 96;
+constexpr float kLabelWidth = 96;  ///< the row labels' column, at least; wider for long part names
 constexpr float kRowHeight = 20;
 constexpr float kDiamond = 6;
 
@@ -73,8 +74,14 @@ void Studio::draw_timeline() {
 
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const ImVec2 cursor = ImGui::GetCursorScreenPos();
-  const float width = std::max(ImGui::GetContentRegionAvail().x - kLabelWidth - 8, 50.0f);
-  const float x0 = cursor.x + kLabelWidth, x1 = x0 + width;
+  // Wide enough for "move  <part>" of the longest part name (the same whichever part is
+  // selected, so the strip does not shift), up to a quarter of the panel.
+  float label_width = kLabelWidth;
+  for (const scene::Part& part : scene.parts)
+    label_width = std::max(label_width, ImGui::CalcTextSize(("move  " + part.name).c_str()).x + 8);
+  label_width = std::min(label_width, std::max(kLabelWidth, ImGui::GetContentRegionAvail().x / 4));
+  const float width = std::max(ImGui::GetContentRegionAvail().x - label_width - 8, 50.0f);
+  const float x0 = cursor.x + label_width, x1 = x0 + width;
   const auto x_of = [&](double time) { return static_cast<float>(x0 + time * (x1 - x0)); };
   const auto t_of = [&](float x) { return std::clamp(static_cast<double>((x - x0) / (x1 - x0)), 0.0, 1.0); };
   const ImGuiIO& io = ImGui::GetIO();
@@ -91,8 +98,8 @@ void Studio::draw_timeline() {
   const ImU32 label = IM_COL32(70, 70, 80, 255);
   draw->AddText({cursor.x, scrub_y + 3}, label, "time");
   draw->AddText({cursor.x, bands_y + 3}, label, "collisions");
-  const std::string part_label = selected_part_ >= 0 ? scene.parts[selected_part_].name : "(no part)";
-  draw->AddText({cursor.x, translation_y + 3}, label, ("move  " + part_label).substr(0, 14).c_str());
+  const std::string move_label = selected_part_ >= 0 ? "move  " + scene.parts[selected_part_].name : "move";
+  draw->AddText({cursor.x, translation_y + 3}, label, fit_text(move_label, label_width - 4).c_str());
   draw->AddText({cursor.x, rotation_y + 3}, label, "rotate");
 
   // Scrub strip with ticks every 0.1.
@@ -100,7 +107,10 @@ void Studio::draw_timeline() {
   for (int i = 0; i <= 10; ++i) {
     const float x = x_of(i / 10.0);
     draw->AddLine({x, scrub_y + kRowHeight - 6}, {x, scrub_y + kRowHeight}, IM_COL32(110, 110, 120, 255));
-    draw->AddText({x + 2, scrub_y + 1}, IM_COL32(110, 110, 120, 255), fmt::format("{:.1f}", i / 10.0).c_str());
+    // Right of its tick, but the last one (1.0) left of it, inside the strip, not cut to "1.".
+    const std::string tick = fmt::format("{:.1f}", i / 10.0);
+    const float text_x = i < 10 ? x + 2 : x - ImGui::CalcTextSize(tick.c_str()).x - 2;
+    draw->AddText({text_x, scrub_y + 1}, IM_COL32(110, 110, 120, 255), tick.c_str());
   }
   ImGui::SetCursorScreenPos({x0, scrub_y});
   ImGui::InvisibleButton("##scrub", {width, kRowHeight});

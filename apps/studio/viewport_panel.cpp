@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <tuple>
 
@@ -15,11 +16,13 @@
 namespace reconfig::studio {
 namespace {
 
-ImU32 handle_color(GizmoHandle handle, bool hot) {
+/// `faded`: see-through, so the collision box the gizmo would cover shows (the hot handle
+/// stays opaque).
+ImU32 handle_color(GizmoHandle handle, bool hot, bool faded) {
   if (hot) return IM_COL32(250, 200, 30, 255);
   const Eigen::Vector3d axis = handle_axis(handle);
   return IM_COL32(static_cast<int>(40 + 190 * axis.x()), static_cast<int>(40 + 150 * axis.y()),
-                  static_cast<int>(40 + 200 * axis.z()), 255);
+                  static_cast<int>(40 + 200 * axis.z()), faded ? 90 : 255);
 }
 
 }  // namespace
@@ -223,7 +226,7 @@ void Studio::handle_viewport_mouse(const ImVec2& origin, int width, int height) 
     const double world_per_pixel = 2 * camera_.distance * std::tan(camera_.fov_y / 2) / height;
     if (ImGui::IsMouseDragging(ImGuiMouseButton_Left, 2)) {
       if (io.KeyShift) camera_.pan(-io.MouseDelta.x * world_per_pixel, io.MouseDelta.y * world_per_pixel);
-      else camera_.orbit(-io.MouseDelta.x * 0.008, io.MouseDelta.y * 0.008);
+      else camera_.orbit(-io.MouseDelta.x * kOrbitPerPixel, io.MouseDelta.y * kOrbitPerPixel);
     }
     if (ImGui::IsMouseReleased(ImGuiMouseButton_Left)) {
       viewport_dragging_ = false;
@@ -231,12 +234,24 @@ void Studio::handle_viewport_mouse(const ImVec2& origin, int width, int height) 
     }
   }
   if (ImGui::IsItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Right, 2))
-    camera_.orbit(-io.MouseDelta.x * 0.008, io.MouseDelta.y * 0.008);
+    camera_.orbit(-io.MouseDelta.x * kOrbitPerPixel, io.MouseDelta.y * kOrbitPerPixel);
   if (ImGui::IsItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Middle, 2)) {
     const double world_per_pixel = 2 * camera_.distance * std::tan(camera_.fov_y / 2) / height;
     camera_.pan(-io.MouseDelta.x * world_per_pixel, io.MouseDelta.y * world_per_pixel);
   }
   if (hovered && io.MouseWheel != 0) camera_.zoom(std::pow(0.88, io.MouseWheel));
+}
+
+bool Studio::selected_part_collides_now() const {
+  const auto snapshot = collisions();
+  if (!snapshot || selected_part_ < 0 || !show_intervals) return false;
+  for (const auto& transition : snapshot->transitions)
+    if (transition.transition == active_transition_)
+      for (const auto& interval : transition.frames)
+        if (interval.t0 <= time_ + 1e-9 && time_ <= interval.t1 + 1e-9 &&
+            std::find(interval.parts.begin(), interval.parts.end(), selected_part_) != interval.parts.end())
+          return true;
+  return false;
 }
 
 void Studio::draw_gizmo(ImDrawList* draw, const ImVec2& origin, int width, int height) {
@@ -250,6 +265,7 @@ void Studio::draw_gizmo(ImDrawList* draw, const ImVec2& origin, int width, int h
       gizmo_drag_    ? gizmo_drag_->handle
       : handle_drag_ ? GizmoHandle::kNone  // a Bézier handle has the mouse
                      : gizmo_->hit(camera_, width, height, {io.MousePos.x - origin.x, io.MousePos.y - origin.y});
+  const bool faded = selected_part_collides_now();
   for (const GizmoHandle handle : {GizmoHandle::kRotateX, GizmoHandle::kRotateY, GizmoHandle::kRotateZ,
                                    GizmoHandle::kMoveX, GizmoHandle::kMoveY, GizmoHandle::kMoveZ}) {
     std::vector<ImVec2> points;
@@ -258,7 +274,7 @@ void Studio::draw_gizmo(ImDrawList* draw, const ImVec2& origin, int width, int h
         points.push_back({origin.x + static_cast<float>(projected->pixel.x()),
                           origin.y + static_cast<float>(projected->pixel.y())});
     if (points.size() < 2) continue;
-    const ImU32 color = handle_color(handle, handle == hovered);
+    const ImU32 color = handle_color(handle, handle == hovered, faded);
     draw->AddPolyline(points.data(), static_cast<int>(points.size()), color, 0, is_rotation(handle) ? 2.0f : 3.0f);
     if (!is_rotation(handle)) {
       // Arrow head: a triangle at the tip, pointing along the projected axis.

@@ -7,8 +7,10 @@
 namespace reconfig::collision {
 namespace {
 
+/// Only intervals of the same pair of parts merge: each interval a designer sees names one pair
+/// (the paper's collision intervals are per pair), and counts of intervals are counts per pair.
 bool can_merge(const CollisionInterval& a, const CollisionInterval& b, double max_duration) {
-  return detail::intervals_meet(a, b) &&
+  return a.parts == b.parts && detail::intervals_meet(a, b) &&
          std::max(a.t1, b.t1) - std::min(a.t0, b.t0) <= max_duration;
 }
 

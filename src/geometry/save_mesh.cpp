@@ -11,6 +11,7 @@
 #include <functional>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include "reconfig/common/input_error.h"
 #include "reconfig/common/write_atomically.h"
@@ -59,17 +60,49 @@ std::string format_float(double value) {
   return buffer;
 }
 
+/// `v` and `f` lines of `mesh`, its vertices numbered after the `first_vertex` written before.
+void write_obj_lines(std::ostream& out, const Mesh& mesh, int first_vertex) {
+  for (int v = 0; v < mesh.vertex_count(); ++v)
+    out << "v " << format_double(mesh.V(v, 0)) << ' ' << format_double(mesh.V(v, 1)) << ' '
+        << format_double(mesh.V(v, 2)) << '\n';
+  const int base = first_vertex + 1;  // OBJ counts from 1
+  for (int f = 0; f < mesh.face_count(); ++f)
+    out << "f " << mesh.F(f, 0) + base << ' ' << mesh.F(f, 1) + base << ' ' << mesh.F(f, 2) + base << '\n';
+}
+
+/// An OBJ object name: one word of printable characters (the name runs to the end of the line).
+std::string obj_name(const std::string& name) {
+  std::string word = name.empty() ? "unnamed" : name;
+  for (char& c : word)
+    if (static_cast<unsigned char>(c) <= ' ' || c == 0x7f) c = '_';
+  return word;
+}
+
 }  // namespace
 
 void save_obj(const fs::path& path, const Mesh& mesh) {
   check_writable(path, mesh);
   write_atomically(path, [&](std::ostream& out) {
     out << "# " << mesh.vertex_count() << " vertices, " << mesh.face_count() << " triangles\n";
-    for (int v = 0; v < mesh.vertex_count(); ++v)
-      out << "v " << format_double(mesh.V(v, 0)) << ' ' << format_double(mesh.V(v, 1)) << ' '
-          << format_double(mesh.V(v, 2)) << '\n';
-    for (int f = 0; f < mesh.face_count(); ++f)
-      out << "f " << mesh.F(f, 0) + 1 << ' ' << mesh.F(f, 1) + 1 << ' ' << mesh.F(f, 2) + 1 << '\n';
+    write_obj_lines(out, mesh, 0);
+  });
+}
+
+void save_obj(const fs::path& path, const std::vector<ObjObject>& objects) {
+  int vertices = 0, faces = 0;
+  for (const ObjObject& object : objects) {
+    check_writable(path, object.mesh);
+    vertices += object.mesh.vertex_count();
+    faces += object.mesh.face_count();
+  }
+  write_atomically(path, [&](std::ostream& out) {
+    out << "# " << objects.size() << " objects, " << vertices << " vertices, " << faces << " triangles\n";
+    int written = 0;
+    for (const ObjObject& object : objects) {
+      out << "o " << obj_name(object.name) << '\n';
+      write_obj_lines(out, object.mesh, written);
+      written += object.mesh.vertex_count();
+    }
   });
 }
 

@@ -239,7 +239,10 @@ std::string describe_rule(const Linkage& linkage, const JointOrder& order, const
   switch (rule.kind) {
     case RuleKind::kFixed: return name(rule.k) + " fixed";
     case RuleKind::kMotor: return name(rule.k) + " turned by the motor about " + name(rule.i);
-    case RuleKind::kTriangle: return "(" + name(rule.i) + ", " + name(rule.j) + ") -> " + name(rule.k);
+    // Appended, not `"(" + name(…)`: GCC 12 warns (-Wrestrict) about the insertion at the front
+    // that `const char* + std::string&&` may do, a false positive (GCC bug 105651).
+    case RuleKind::kTriangle:
+      return std::string("(").append(name(rule.i)).append(", ").append(name(rule.j)).append(") -> ").append(name(rule.k));
     case RuleKind::kRigid: return name(rule.k) + " rigid with " + name(rule.i) + ", " + name(rule.j);
     case RuleKind::kNewtonBlock: {
       std::string names;

@@ -32,7 +32,7 @@ NewtonKinematics::NewtonKinematics(const Linkage& linkage) : linkage_(linkage) {
     if (linkage.joints[j].fixed) {
       for (const auto& [l, s] : on) pins_.push_back({l, s, -1, -1, linkage.joints[j].position});
     } else {
-      for (std::size_t t = 1; t < on.size(); ++t) pins_.push_back({on[0].first, on[0].second, on[t].first, on[t].second, {}});
+      for (std::size_t t = 1; t < on.size(); ++t) pins_.push_back({on[0].first, on[0].second, on[t].first, on[t].second, Eigen::Vector2d::Zero()});
     }
   }
   for (const auto& [l, s] : carriers[linkage.motor.joint]) {

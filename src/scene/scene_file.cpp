@@ -18,10 +18,13 @@
 #include "common/detail/strict_json.h"
 #include "reconfig/scene/validate_scene.h"
 #include "scene/detail/json_cursor.h"
+#include "scene/detail/rotation_json.h"
+#include "scene/detail/translation_ease.h"
 
 namespace reconfig::scene {
 namespace fs = std::filesystem;
 using detail::JsonCursor;
+using detail::read_rotation;
 using nlohmann::ordered_json;
 
 namespace {
@@ -33,7 +36,7 @@ motion::Pose read_pose(const JsonCursor& c) {
   c.expect_object({"translation", "rotation"});
   motion::Pose pose;
   if (c.has("translation")) pose.translation = c["translation"].as_vector3();
-  if (c.has("rotation")) pose.rotation = c["rotation"].as_unit_quaternion();
+  if (c.has("rotation")) pose.rotation = read_rotation(c["rotation"]);
   return pose;
 }
 
@@ -129,19 +132,22 @@ State read_state(const JsonCursor& c) {
   return state;
 }
 
-motion::TranslationKey read_translation_key(const JsonCursor& c) {
+detail::WrittenTranslationKey read_translation_key(const JsonCursor& c) {
   c.expect_object({"time", "point", "in", "out"});
-  motion::TranslationKey key;
+  detail::WrittenTranslationKey key;
   key.time = c["time"].as_number();
   key.point = c["point"].as_vector3();
-  key.in = c.has("in") ? c["in"].as_vector3() : key.point;
-  key.out = c.has("out") ? c["out"].as_vector3() : key.point;
+  if (c.has("in")) key.in = c["in"].as_vector3();
+  if (c.has("out")) key.out = c["out"].as_vector3();
   return key;
 }
 
+/// `quaternion` as ever, or `rotation` in any form `read_rotation` accepts.
 motion::RotationKey read_rotation_key(const JsonCursor& c) {
-  c.expect_object({"time", "quaternion"});
-  return {c["time"].as_number(), c["quaternion"].as_unit_quaternion()};
+  c.expect_object({"time", "quaternion", "rotation"});
+  if (c.has("quaternion") == c.has("rotation")) c.fail("a rotation key needs exactly one of \"quaternion\", \"rotation\"");
+  const double time = c["time"].as_number();
+  return {time, c.has("quaternion") ? c["quaternion"].as_unit_quaternion() : read_rotation(c["rotation"])};
 }
 
 Track read_track(const JsonCursor& c) {
@@ -157,20 +163,23 @@ Track read_track(const JsonCursor& c) {
       key.expect_object({"time", "translation", "rotation"});
       motion::Pose pose;
       if (key.has("translation")) pose.translation = key["translation"].as_vector3();
-      if (key.has("rotation")) pose.rotation = key["rotation"].as_unit_quaternion();
+      if (key.has("rotation")) pose.rotation = read_rotation(key["rotation"]);
       track.poses.push_back({key["time"].as_number(), pose});
     }
     return track;
   }
   if (interpolation != "bezier")
     c["interpolation"].fail(fmt::format("unknown interpolation \"{}\" (expected \"bezier\" or \"screw\")", interpolation));
-  c.expect_object({"interpolation", "translation", "rotation"});
+  c.expect_object({"interpolation", "ease", "translation", "rotation"});
   KeyframedTrack track;
+  const detail::Ease ease = c.has("ease") ? detail::read_ease(c["ease"]) : detail::Ease::smooth;
   if (c.has("translation")) {
     const JsonCursor keys = c["translation"];
     const std::size_t n = keys.expect_array();
     if (n == 0) keys.fail("give at least one key, or leave the list out");
-    for (std::size_t i = 0; i < n; ++i) track.translation.push_back(read_translation_key(keys[i]));
+    std::vector<detail::WrittenTranslationKey> written;
+    for (std::size_t i = 0; i < n; ++i) written.push_back(read_translation_key(keys[i]));
+    track.translation = detail::ease_translation_keys(written, ease);
   }
   if (c.has("rotation")) {
     const JsonCursor keys = c["rotation"];

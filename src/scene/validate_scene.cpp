@@ -141,10 +141,11 @@ void check_track(const Track& track, const auto& path_of, const std::string& par
                                   "and \"{}\"", part, from.name, to.name));
   } else {
     const std::size_t n = keyed.rotation.size() - 1;
-    check_rotation_end(keyed.rotation.front().rotation, first, "first", [&] { return rotation() + "[0].quaternion"; },
-                       part, from.name, tolerance);
-    check_rotation_end(keyed.rotation.back().rotation, last, "last",
-                       [&] { return fmt::format("{}[{}].quaternion", rotation(), n); }, part, to.name, tolerance);
+    // The key, not its field: it may be written as `quaternion` or as `rotation` (axis and angle).
+    check_rotation_end(keyed.rotation.front().rotation, first, "first", [&] { return rotation() + "[0]"; }, part,
+                       from.name, tolerance);
+    check_rotation_end(keyed.rotation.back().rotation, last, "last", [&] { return fmt::format("{}[{}]", rotation(), n); },
+                       part, to.name, tolerance);
   }
 }
 

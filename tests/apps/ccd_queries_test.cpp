@@ -175,6 +175,18 @@ TEST(CcdQueriesCli, TruthColumnIsOnlyCompared) {
   EXPECT_NE(run.err.find("1 false positives, 2 false negatives"), std::string::npos) << run.err;
 }
 
+TEST(CcdQueriesCli, ShippedExamplesAnswerAsTheirTruthColumns) {
+  const fs::path examples = testing::source_dir() / "examples" / "ccd-queries";
+  const auto vf = run_reconfig("ccd-queries " + (examples / "vertex-face.csv").string() + " --kind vf");
+  ASSERT_EQ(vf.exit_code, 0) << vf.err;
+  EXPECT_EQ(vf.out, "1\n0\n1\n0\n");
+  EXPECT_NE(vf.err.find("0 false positives, 0 false negatives; 1 queries with inexact"), std::string::npos) << vf.err;
+  const auto ee = run_reconfig("ccd-queries " + (examples / "edge-edge.csv").string() + " --kind ee");
+  ASSERT_EQ(ee.exit_code, 0) << ee.err;
+  EXPECT_EQ(ee.out, "1\n0\n");
+  EXPECT_NE(ee.err.find("0 false positives, 0 false negatives"), std::string::npos) << ee.err;
+}
+
 /// Writes `text` and runs the command on it.
 testing::CommandResult run_on(const std::string& text, const std::string& kind = "vf") {
   const fs::path path = testing::fresh_temp_dir() / "bad.csv";

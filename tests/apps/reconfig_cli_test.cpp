@@ -4,7 +4,11 @@
 
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
 
+#include "reconfig/geometry/load_mesh.h"
+#include "reconfig/scene/scene_file.h"
 #include "support/run_command.h"
 #include "support/test_data.h"
 
@@ -118,14 +122,22 @@ TEST(ReconfigCli, InfoListsPartsStatesAndTransitions) {
   EXPECT_EQ(info["states"].size(), 2u);
 }
 
-TEST(ReconfigCli, PoseWritesTheWholeSceneAsOneMesh) {
+TEST(ReconfigCli, PoseWritesOneNamedObjectPerPart) {
   const fs::path out = testing::fresh_temp_dir() / "posed.obj";
   const auto run = run_reconfig("pose " + bench_table() + " --transition unfold --time 0.5 -o " + out.string());
   ASSERT_EQ(run.exit_code, 0) << run.err;
   std::ifstream in(out);
   int faces = 0;
-  for (std::string line; std::getline(in, line);) faces += line.rfind("f ", 0) == 0;
+  std::vector<std::string> objects;
+  for (std::string line; std::getline(in, line);) {
+    faces += line.rfind("f ", 0) == 0;
+    if (line.rfind("o ", 0) == 0) objects.push_back(line.substr(2));
+  }
+  const scene::Reconfigurable scene = scene::load_scene(bench_table());
+  ASSERT_EQ(objects.size(), scene.parts.size());
+  for (std::size_t p = 0; p < objects.size(); ++p) EXPECT_EQ(objects[p], scene.parts[p].name);
   EXPECT_EQ(faces, 40 + 40 + 36 + 36 + 12 + 12);
+  EXPECT_EQ(geometry::load_mesh(out).face_count(), faces);  // and it reads back
   EXPECT_EQ(run_reconfig("pose " + bench_table() + " --state table -o " + out.string()).exit_code, 0);
 }
 

@@ -15,23 +15,35 @@ TriangleContact contact(int a, int b, double t0, double t1, double x0, double x1
   return {a, tri, b, tri, t0, t1, box(x0, x1), false};
 }
 
-TEST(Consolidate, MergesContactsThatMeetInTimeAndSpace) {
+TEST(Consolidate, MergesContactsOfOnePairThatMeetInTimeAndSpace) {
   const std::vector<TriangleContact> contacts = {
       contact(0, 1, 0.10, 0.20, 0, 1),
       contact(0, 1, 0.20, 0.30, 0.5, 1.5),  // adjacent in time, overlapping in space: merges
       contact(0, 1, 0.25, 0.28, 5, 6),      // overlaps in time but far away: separate
-      contact(1, 2, 0.29, 0.35, 1.2, 2),    // meets the first group: merges across parts
+      contact(1, 2, 0.29, 0.35, 1.2, 2),    // meets the first group, but is another pair: separate
       contact(0, 1, 0.50, 0.60, 0, 1),      // later: separate
   };
   const std::vector<CollisionInterval> merged = consolidate(contacts, {});
-  ASSERT_EQ(merged.size(), 3u);
+  ASSERT_EQ(merged.size(), 4u);
   EXPECT_EQ(merged[0].t0, 0.10);
-  EXPECT_EQ(merged[0].t1, 0.35);
-  EXPECT_EQ(merged[0].parts, (std::vector<int>{0, 1, 2}));
+  EXPECT_EQ(merged[0].t1, 0.30);
+  EXPECT_EQ(merged[0].parts, (std::vector<int>{0, 1}));
   EXPECT_EQ(merged[0].box.min().x(), 0);
-  EXPECT_EQ(merged[0].box.max().x(), 2);
+  EXPECT_EQ(merged[0].box.max().x(), 1.5);
   EXPECT_EQ(merged[1].t0, 0.25);
-  EXPECT_EQ(merged[2].t0, 0.50);
+  EXPECT_EQ(merged[2].parts, (std::vector<int>{1, 2}));
+  EXPECT_EQ(merged[2].t1, 0.35);
+  EXPECT_EQ(merged[3].t0, 0.50);
+}
+
+TEST(Consolidate, EachIntervalNamesOnePairOfParts) {
+  // A bracket hit by two stools at one place and time (the kitchen after a gizmo edit): two
+  // intervals, one per pair, not one of three parts.
+  const std::vector<CollisionInterval> merged =
+      consolidate({contact(0, 1, 0.2, 0.4, 0, 1), contact(0, 2, 0.3, 0.5, 0.5, 1.5)}, {});
+  ASSERT_EQ(merged.size(), 2u);
+  EXPECT_EQ(merged[0].parts, (std::vector<int>{0, 1}));
+  EXPECT_EQ(merged[1].parts, (std::vector<int>{0, 2}));
 }
 
 TEST(Consolidate, BoundedDurationKeepsIntervalsShort) {
@@ -73,11 +85,11 @@ TEST(Consolidate, EveryContactIsCoveredByOneInterval) {
                    ci.t0 <= c.t0 && c.t1 <= ci.t1 && ci.box.contains(c.box);
       EXPECT_EQ(holders, 1);
     }
-    // No two intervals could still merge: they do not meet in time and space, or (bounded)
-    // together they would last longer than the limit.
+    // No two intervals could still merge: they are of different pairs, do not meet in time and
+    // space, or (bounded) together they would last longer than the limit.
     for (std::size_t i = 0; i < merged.size(); ++i)
       for (std::size_t j = i + 1; j < merged.size(); ++j)
-        EXPECT_FALSE(merged[i].t0 <= merged[j].t1 && merged[j].t0 <= merged[i].t1 &&
+        EXPECT_FALSE(merged[i].parts == merged[j].parts && merged[i].t0 <= merged[j].t1 && merged[j].t0 <= merged[i].t1 &&
                      merged[i].box.intersects(merged[j].box) &&
                      std::max(merged[i].t1, merged[j].t1) - std::min(merged[i].t0, merged[j].t0) <= limit);
   }

@@ -168,7 +168,7 @@ TEST(ReferenceCheck, AgreesWithAllPairsBruteForceOnRandomScenes) {
   for (int round = 0; round < 6; ++round) {
     json parts = json::array(), start = json::object(), end = json::object(), tracks = json::object();
     for (int p = 0; p < 4; ++p) {
-      const std::string name = "p" + std::to_string(p);
+      const std::string name = std::string("p").append(std::to_string(p));  // `"p" + …`: a false -Wrestrict (GCC 12)
       parts.push_back(p % 2 ? json{{"name", name}, {"sphere", {{"radius", 0.25}, }}}
                             : json{{"name", name}, {"box", {{"size", {0.5, 0.3, 0.2}}}}});
       const Eigen::Vector3d a(coordinate(random), coordinate(random), coordinate(random));

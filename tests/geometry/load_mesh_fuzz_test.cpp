@@ -102,10 +102,10 @@ std::vector<Seed> seeds() {
                          (static_cast<unsigned char>(buffer[i + 1]) << 8) | static_cast<unsigned char>(buffer[i + 2]);
       for (int k = 3; k >= 0; --k) base64 += table[(n >> (6 * k)) & 63];
     }
-    const auto gltf = [](const std::string& buffer) {
+    const auto gltf = [](const std::string& uri_field) {
       return R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],
 "nodes":[{"mesh":0,"translation":[5,0,0]}],"meshes":[{"primitives":[{"attributes":{"POSITION":0},"indices":1}]}],
-"buffers":[{"byteLength":72)" + buffer + R"(}],
+"buffers":[{"byteLength":72)" + uri_field + R"(}],
 "bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":48},{"buffer":0,"byteOffset":48,"byteLength":24}],
 "accessors":[{"bufferView":0,"componentType":5126,"count":4,"type":"VEC3","min":[0,0,0],"max":[1,1,1]},
 {"bufferView":1,"componentType":5123,"count":12,"type":"SCALAR"}]})";

@@ -121,5 +121,23 @@ TEST(SaveMesh, RefusesOutOfRangeIndices) {
   EXPECT_FALSE(fs::exists(path));
 }
 
+TEST(SaveMesh, ObjObjectsAreNamedAndReadBackAsOneMesh) {
+  const fs::path path = fresh_temp_dir() / "parts.obj";
+  Mesh box = make_box({1, 1, 1});
+  box.V.col(0).array() += 5;  // apart from the sphere, so welding on loading merges nothing
+  const Mesh sphere = rotated_sphere(2);
+  save_obj(path, std::vector<ObjObject>{{"box", box}, {"a sphere\twith\nspaces", sphere}});
+  const std::string text = read_bytes(path.string());
+  EXPECT_NE(text.find("\no box\nv "), std::string::npos) << text.substr(0, 200);
+  EXPECT_NE(text.find("\no a_sphere_with_spaces\nv "), std::string::npos);
+  // The sphere's faces are numbered after the box's 8 vertices.
+  const std::size_t sphere_start = text.find("o a_sphere");
+  EXPECT_NE(text.find("\nf " + std::to_string(sphere.F(0, 0) + 9) + " ", sphere_start), std::string::npos);
+  const Mesh back = load_mesh(path);
+  EXPECT_EQ(back.face_count(), box.face_count() + sphere.face_count());
+  EXPECT_EQ(back.vertex_count(), box.vertex_count() + sphere.vertex_count());
+  EXPECT_EQ(Eigen::MatrixX3d(back.V.bottomRows(sphere.vertex_count())), sphere.V);
+}
+
 }  // namespace
 }  // namespace reconfig::geometry

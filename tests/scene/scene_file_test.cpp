@@ -194,7 +194,7 @@ INSTANTIATE_TEST_SUITE_P(
                  [](json& d) {
                    d["transitions"][0]["tracks"]["lid"]["rotation"][0]["quaternion"] = {0.7071, 0.7071, 0, 0};
                  },
-                 "transitions[0].tracks.lid.rotation[0].quaternion", "state \"closed\""},
+                 "transitions[0].tracks.lid.rotation[0]", "state \"closed\""},
         BadInput{"part without track moves",
                  [](json& d) { d["states"][1]["poses"]["ball"] = {{"translation", {1, 0, 0}}}; },
                  "transitions[0].tracks", "has no track"},
@@ -298,7 +298,7 @@ TEST(SceneFile, FuzzedFilesNeverCrash) {
         case 4: mutated.insert(random() % mutated.size(), mutated.substr(at, 1 + random() % 40)); break;  // repeats keys
         default: mutated = mutated.substr(0, at); break;
       }
-      if (mutated.empty()) mutated = "{";
+      if (mutated.empty()) mutated.push_back('{');  // (`= "{"` gets a false -Wrestrict from GCC 12, bug 105329)
     }
     try {
       parse_scene(mutated, fs::current_path(), "fuzz.json");

@@ -59,6 +59,19 @@ TEST(StudioCli, ScreenshotWritesAPngOfTheWholeStudio) {
   EXPECT_NE(json.find("\"frames\": 3"), std::string::npos) << json;
 }
 
+TEST(StudioCli, ScreenshotWaitsForCollisionDetectionUnlessToldNotTo) {
+  const std::filesystem::path scene = bench_table_copy();
+  const std::filesystem::path png = scene.parent_path() / "waited.png";
+  const auto waited =
+      testing::run_tool("reconfig-studio", scene.string() + " --time 0.4 --size 640x400 --screenshot " + png.string());
+  ASSERT_EQ(waited.exit_code, 0) << waited.err;
+  EXPECT_EQ(waited.out, "wrote " + png.string() + " (collisions detected)\n");
+  const auto at_once = testing::run_tool("reconfig-studio", scene.string() + " --size 640x400 --no-wait --screenshot " +
+                                                                png.string());
+  ASSERT_EQ(at_once.exit_code, 0) << at_once.err;
+  EXPECT_EQ(at_once.out, "wrote " + png.string() + "\n");
+}
+
 // The desktop path (GLFW window, the ImGui GLFW backend, swapping) under a virtual X server.
 TEST(StudioCli, TheWindowShowsTheStudioUnderXvfb) {
   if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0) GTEST_SKIP() << "xvfb-run is not installed (./run deps)";

@@ -7,6 +7,8 @@
 /// file in place.
 
 #include <filesystem>
+#include <string>
+#include <vector>
 
 #include "reconfig/geometry/mesh.h"
 
@@ -19,6 +21,19 @@ namespace reconfig::geometry {
 /// @throws InputError naming `path` if the file cannot be written, or (nothing written) if a
 ///   face index is out of range (`face <i>`) or a coordinate is not finite (`vertex <i>`)
 void save_obj(const std::filesystem::path& path, const Mesh& mesh);
+
+/// One object of a multi-object OBJ file: a name (`o <name>`) and its mesh.
+struct ObjObject {
+  std::string name;
+  Mesh mesh;
+};
+
+/// Writes `objects` as one Wavefront OBJ with an `o <name>` line before each object's `v` and
+/// `f` lines, so that Blender and MeshLab show them as separate objects; whitespace and control
+/// characters in a name become `_` (an empty name `unnamed`). Vertices are numbered through the
+/// file; positions are written as by `save_obj(path, mesh)`.
+/// @throws InputError as `save_obj(path, mesh)`, for the first object at fault
+void save_obj(const std::filesystem::path& path, const std::vector<ObjObject>& objects);
 
 /// Writes `mesh` as an STL, binary (little-endian, 80-byte header) or ASCII ("solid reconfig").
 /// STL stores one triangle after another with single-precision coordinates and no shared

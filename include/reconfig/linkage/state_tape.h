@@ -20,7 +20,9 @@ class StateTape {
   /// indexes `blocks` instead.
   struct Step {
     int k = -1, i = -1, j = -1, block = -1;
-    Eigen::Matrix2d Mi, Mj, Pi, Pj, Pk;
+    // Zero, not left uninitialized (Eigen's default): a step is reset with `step = {}`.
+    Eigen::Matrix2d Mi = Eigen::Matrix2d::Zero(), Mj = Eigen::Matrix2d::Zero(), Pi = Eigen::Matrix2d::Zero(),
+                    Pj = Eigen::Matrix2d::Zero(), Pk = Eigen::Matrix2d::Zero();
   };
   /// A Newton block: outputs y (its joints), known inputs z, parameters x̄ of `params`;
   /// dy = S_in dz + S_param dx̄ (implicit function theorem).
