@@ -185,6 +185,39 @@ void Studio::poll_auto_resolve() {
   hint_.reset();
 }
 
+namespace {
+
+constexpr float kSteepestHint[3] = {1.0f, 0.82f, 0.0f};
+constexpr float kOtherHint[3] = {0.95f, 0.9f, 0.45f};
+
+Eigen::Vector3f hint_color(bool steepest) {
+  const float* c = steepest ? kSteepestHint : kOtherHint;
+  return {c[0], c[1], c[2]};
+}
+
+/// A quarter-turn arc about `axis` through `pivot` of radius r, drawn as a polyline ending in an
+/// arrow head: how a rotation key should turn.
+void add_turn_arc(render::DrawList& list, const Eigen::Vector3d& pivot, const Eigen::Vector3d& axis, double r,
+                  const Eigen::Vector3f& color) {
+  const Eigen::Vector3d u = axis.unitOrthogonal(), v = axis.cross(u);
+  render::LineItem arc;
+  arc.color = {color.x(), color.y(), color.z(), 1.0f};
+  constexpr int kSegments = 24;
+  for (int i = 0; i <= kSegments; ++i) {
+    const double a = 0.5 * M_PI * i / kSegments;
+    arc.points.push_back(pivot + r * (std::cos(a) * u + std::sin(a) * v));
+  }
+  render::ArrowItem head;  // along the arc's tangent at its end (a = π/2: −u)
+  head.from = arc.points.back();
+  head.to = arc.points.back() - 0.25 * r * u;
+  head.color = color;
+  head.head_fraction = 0.9;
+  list.lines.push_back(std::move(arc));
+  list.arrows.push_back(head);
+}
+
+}  // namespace
+
 void Studio::add_hint_arrows(render::DrawList& list) const {
   if (!document_ || !hint_ || hint_->transition != active_transition_) return;
   const scene::Reconfigurable& scene = document_->scene();
@@ -194,19 +227,43 @@ void Studio::add_hint_arrows(render::DrawList& list) const {
   if (!track) return;
   for (int i = 0; i < static_cast<int>(hint_->result.hints.size()); ++i) {
     const resolve::Hint& hint = hint_->result.hints[i];
-    if (hint.dof.track != scene::KeyKind::kTranslation || hint.dof.kind == resolve::DofKind::kTime ||
-        hint.dof.key >= static_cast<int>(track->translation.size()) || hint.slope >= 0)
+    if (hint.dof.kind == resolve::DofKind::kTime || hint.slope >= 0) continue;
+    const bool steepest = i == hint_->steepest;
+    if (hint.dof.kind == resolve::DofKind::kRotation) {
+      if (hint.dof.key >= static_cast<int>(track->rotation.size())) continue;
+      const double t = track->rotation[hint.dof.key].time;
+      const Eigen::Vector3d pivot = scene.pose_at(hint_->transition, hint_->part, t).apply(part.center, part.center);
+      add_turn_arc(list, pivot, Eigen::Vector3d(hint.direction), (steepest ? 1.0 : 0.6) * length, hint_color(steepest));
       continue;
+    }
+    if (hint.dof.key >= static_cast<int>(track->translation.size())) continue;
     const motion::TranslationKey& key = track->translation[hint.dof.key];
     const Eigen::Vector3d at = part.center + (hint.dof.kind == resolve::DofKind::kHandleIn    ? key.in
                                               : hint.dof.kind == resolve::DofKind::kHandleOut ? key.out
                                                                                               : key.point);
     render::ArrowItem arrow;
     arrow.from = at;
-    arrow.to = at + (i == hint_->steepest ? 1.0 : 0.5) * length * Eigen::Vector3d(hint.direction);
-    arrow.color = i == hint_->steepest ? Eigen::Vector3f(1.0f, 0.82f, 0.0f) : Eigen::Vector3f(0.95f, 0.9f, 0.45f);
+    arrow.to = at + (steepest ? 1.0 : 0.5) * length * Eigen::Vector3d(hint.direction);
+    arrow.color = hint_color(steepest);
     arrow.head_fraction = 0.3;
     list.arrows.push_back(arrow);
+  }
+}
+
+void Studio::draw_time_hints(ImDrawList* draw) const {
+  if (!document_ || !hint_ || hint_->transition != active_transition_) return;
+  for (int i = 0; i < static_cast<int>(hint_->result.hints.size()); ++i) {
+    const resolve::Hint& hint = hint_->result.hints[i];
+    if (hint.dof.kind != resolve::DofKind::kTime || hint.slope >= 0) continue;
+    const bool translation = hint.dof.track == scene::KeyKind::kTranslation;
+    const std::size_t keys = translation ? hint_->base.translation.size() : hint_->base.rotation.size();
+    if (hint.dof.key >= static_cast<int>(keys)) continue;
+    const double t = translation ? hint_->base.translation[hint.dof.key].time : hint_->base.rotation[hint.dof.key].time;
+    const float x = timeline_point(t).x, y = translation ? layout_.translation_row_y : layout_.rotation_row_y;
+    const float side = hint.direction[0] > 0 ? 1.0f : -1.0f;  // later or earlier
+    const ImU32 color = i == hint_->steepest ? IM_COL32(255, 210, 0, 255) : IM_COL32(240, 228, 115, 255);
+    draw->AddTriangleFilled({x + side * 9, y - 6}, {x + side * 9, y + 6}, {x + side * 19, y}, color);
+    draw->AddLine({x + side * 3, y}, {x + side * 10, y}, color, 3);
   }
 }
 

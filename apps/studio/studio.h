@@ -199,8 +199,11 @@ class Studio {
   void draw_collision_settings();
   /// The inspector's section for hints and automatic resolution (resolve_panel.cpp).
   void draw_resolve_section();
-  /// The hint's arrows, for the viewport's draw list.
+  /// The hint's arrows (at translation keys and handles) and arcs (about the pivot, for
+  /// rotation keys), for the viewport's draw list.
   void add_hint_arrows(render::DrawList& list) const;
+  /// The hint's left/right arrows at the keys whose time it would move, on the timeline rows.
+  void draw_time_hints(ImDrawList* draw) const;
   /// Takes the result of a finished automatic resolution (each frame).
   void poll_auto_resolve();
   void handle_shortcuts();

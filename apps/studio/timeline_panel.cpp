@@ -232,6 +232,7 @@ void Studio::draw_timeline() {
   const float x = x_of(time_);
   draw->AddLine({x, scrub_y}, {x, rotation_y + kRowHeight}, IM_COL32(30, 90, 220, 255), 2);
   draw->AddTriangleFilled({x - 6, scrub_y}, {x + 6, scrub_y}, {x, scrub_y + 8}, IM_COL32(30, 90, 220, 255));
+  draw_time_hints(draw);
   ImGui::End();
 }
 
