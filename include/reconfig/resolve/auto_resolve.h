@@ -48,8 +48,11 @@ struct AutoResolveResult {
 /// Resolves the collisions of one transition by moving its inner keys with their handles. The
 /// end keys are the states' poses and stay fixed, and so do their handles (how a part leaves
 /// and reaches a state: a stowed part can often leave only one way). A part of a pair with
-/// no inner key near the pair's collision interval gets one inserted at the severity time first
-/// (the motion is unchanged by the insertion). Parts without keyframed tracks are not moved.
+/// no inner key near the severity time (within an eighth of the pair's time window) gets one
+/// inserted there first (the motion is unchanged by the insertion). Each round descends on the
+/// pair's energy plus that of its moving parts against every part they may reach, so that a
+/// move does not trade one collision for another. Parts without keyframed tracks (screw poses,
+/// linkage drives, still parts) are not moved.
 AutoResolveResult auto_resolve(const scene::Reconfigurable& scene, const AutoResolveRequest& request);
 
 }  // namespace reconfig::resolve
