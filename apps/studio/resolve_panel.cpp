@@ -39,6 +39,22 @@ double slide_reach(const resolve::Hint& hint, const geometry::Mesh& mesh) {
   return 0.5 * (mesh.V.colwise().maxCoeff() - mesh.V.colwise().minCoeff()).norm();
 }
 
+/// Whether two tracks have the same keyframes (a screw track never counts as unchanged).
+bool same_keys(const scene::Track& a, const scene::Track& b) {
+  const auto* x = std::get_if<scene::KeyframedTrack>(&a);
+  const auto* y = std::get_if<scene::KeyframedTrack>(&b);
+  if (!x || !y) return false;
+  const auto same_translation = [](const motion::TranslationKey& p, const motion::TranslationKey& q) {
+    return p.time == q.time && p.point == q.point && p.in == q.in && p.out == q.out;
+  };
+  const auto same_rotation = [](const motion::RotationKey& p, const motion::RotationKey& q) {
+    return p.time == q.time && p.rotation.coeffs() == q.rotation.coeffs();
+  };
+  return std::equal(x->translation.begin(), x->translation.end(), y->translation.begin(), y->translation.end(),
+                    same_translation) &&
+         std::equal(x->rotation.begin(), x->rotation.end(), y->rotation.begin(), y->rotation.end(), same_rotation);
+}
+
 }  // namespace
 
 bool Studio::request_hint() {
@@ -82,7 +98,10 @@ bool Studio::request_hint() {
 }
 
 bool Studio::slide_along_hint(double amount, bool live) {
-  if (!document_ || !hint_ || hint_->steepest < 0) return false;
+  if (!hint_is_current() || hint_->steepest < 0) {
+    set_status("slide: no hint for the design as it is (press H)", true);
+    return false;
+  }
   HintView& view = *hint_;
   const resolve::Hint& hint = view.result.hints[view.steepest];
   const scene::Reconfigurable& scene = document_->scene();
@@ -107,7 +126,8 @@ bool Studio::slide_along_hint(double amount, bool live) {
     }
     command = scene::set_rotation_key(transition, part, hint.dof.key, key);
   }
-  if (view.sliding) document_->undo();  // the previous position of this slide
+  // The previous position of this slide, if its edit is still the latest.
+  if (view.sliding && document_->version() == view.version) document_->undo();
   view.sliding = false;
   const bool applied = execute(std::move(command));
   view.sliding = applied && live;
@@ -120,6 +140,7 @@ bool Studio::start_auto_resolve(bool move_times) {
   if (!document_ || active_transition_ < 0 || auto_resolve_) return false;
   auto job = std::make_unique<AutoResolveJob>();
   job->transition = active_transition_;
+  job->version = document_->version();
   AutoResolveJob* state = job.get();
   resolve::AutoResolveRequest request;
   request.transition = active_transition_;
@@ -152,27 +173,20 @@ void Studio::cancel_auto_resolve() {
 void Studio::poll_auto_resolve() {
   if (!auto_resolve_ || auto_resolve_->result.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
   const int transition = auto_resolve_->transition;
+  const std::uint64_t version = auto_resolve_->version;
   resolve::AutoResolveResult result = auto_resolve_->result.get();
   auto_resolve_.reset();
-  if (!document_ || result.cancelled || transition >= static_cast<int>(document_->scene().transitions.size())) return;
+  if (!document_ || result.cancelled) return;
+  if (document_->version() != version) {  // edits made meanwhile would be overwritten
+    set_status("automatic resolution dropped: the design changed while it ran (run it again)", true);
+    return;
+  }
   const std::string& name = document_->scene().transitions[transition].name;
   std::map<std::string, scene::Track> tracks;
+  const auto& now = document_->scene().transitions[transition].tracks;
   for (const auto& [part, track] : result.scene.transitions[transition].tracks) {
-    const auto& now = document_->scene().transitions[transition].tracks;
     const auto it = now.find(part);
-    const auto* moved = std::get_if<scene::KeyframedTrack>(&track);
-    const auto* was = it == now.end() ? nullptr : std::get_if<scene::KeyframedTrack>(&it->second);
-    const bool same = moved && was && moved->translation.size() == was->translation.size() &&
-                      moved->rotation.size() == was->rotation.size() &&
-                      std::equal(moved->translation.begin(), moved->translation.end(), was->translation.begin(),
-                                 [](const auto& a, const auto& b) {
-                                   return a.time == b.time && a.point == b.point && a.in == b.in && a.out == b.out;
-                                 }) &&
-                      std::equal(moved->rotation.begin(), moved->rotation.end(), was->rotation.begin(),
-                                 [](const auto& a, const auto& b) {
-                                   return a.time == b.time && a.rotation.coeffs() == b.rotation.coeffs();
-                                 });
-    if (!same) tracks[part] = track;
+    if (it == now.end() || !same_keys(track, it->second)) tracks[part] = track;
   }
   if (tracks.empty()) {
     set_status(fmt::format("automatic resolution of {}: {}; nothing changed", name, result.stopped_because),
@@ -218,12 +232,18 @@ void add_turn_arc(render::DrawList& list, const Eigen::Vector3d& pivot, const Ei
 
 }  // namespace
 
+bool Studio::hint_is_current() const {
+  return document_ && hint_ && hint_->transition == active_transition_ && hint_->version == document_->version();
+}
+
 void Studio::add_hint_arrows(render::DrawList& list) const {
-  if (!document_ || !hint_ || hint_->transition != active_transition_) return;
+  if (!hint_is_current()) return;  // after another edit the arrows would point from old places
   const scene::Reconfigurable& scene = document_->scene();
   const scene::Part& part = scene.parts[hint_->part];
   const double length = 0.35 * (part.mesh.V.colwise().maxCoeff() - part.mesh.V.colwise().minCoeff()).norm();
-  const auto* track = std::get_if<scene::KeyframedTrack>(&scene.transitions[hint_->transition].tracks.at(part.name));
+  const auto& tracks = scene.transitions[hint_->transition].tracks;
+  const auto found = tracks.find(part.name);
+  const auto* track = found == tracks.end() ? nullptr : std::get_if<scene::KeyframedTrack>(&found->second);
   if (!track) return;
   for (int i = 0; i < static_cast<int>(hint_->result.hints.size()); ++i) {
     const resolve::Hint& hint = hint_->result.hints[i];
@@ -251,7 +271,7 @@ void Studio::add_hint_arrows(render::DrawList& list) const {
 }
 
 void Studio::draw_time_hints(ImDrawList* draw) const {
-  if (!document_ || !hint_ || hint_->transition != active_transition_) return;
+  if (!hint_is_current()) return;
   for (int i = 0; i < static_cast<int>(hint_->result.hints.size()); ++i) {
     const resolve::Hint& hint = hint_->result.hints[i];
     if (hint.dof.kind != resolve::DofKind::kTime || hint.slope >= 0) continue;
@@ -281,6 +301,10 @@ void Studio::draw_resolve_section() {
     start_auto_resolve();
   }
   if (!hint_ || hint_->transition != active_transition_) return;
+  if (!hint_is_current()) {
+    ImGui::TextDisabled("the design changed: press H for a new hint");
+    return;
+  }
   const scene::Reconfigurable& scene = document_->scene();
   ImGui::Text("hint for %s: energy %.3g", scene.parts[hint_->part].name.c_str(), hint_->result.energy);
   if (hint_->steepest < 0) return;

@@ -74,6 +74,9 @@ void Studio::reset_view_for_new_document() {
   gizmo_drag_.reset();
   drag_preview_.reset();
   key_drag_.reset();
+  hint_.reset();  // hints and resolutions belong to the design they were computed for
+  if (auto_resolve_) auto_resolve_->cancel = true;
+  auto_resolve_.reset();
   frame_pending_ = true;
 }
 

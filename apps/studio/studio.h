@@ -204,6 +204,8 @@ class Studio {
   void add_hint_arrows(render::DrawList& list) const;
   /// The hint's left/right arrows at the keys whose time it would move, on the timeline rows.
   void draw_time_hints(ImDrawList* draw) const;
+  /// A hint is drawn only for the design version it was computed for (or slid to).
+  bool hint_is_current() const;
   /// Takes the result of a finished automatic resolution (each frame).
   void poll_auto_resolve();
   void handle_shortcuts();
@@ -291,6 +293,7 @@ class Studio {
   struct AutoResolveJob {
     ~AutoResolveJob() { cancel = true; }  // before the future waits for the thread to end
     int transition = -1;
+    std::uint64_t version = 0;  ///< of the design it resolves: a result for another is dropped
     std::atomic<double> progress{0};
     std::atomic<bool> cancel{false};
     std::atomic<int> rounds{0};

@@ -13,6 +13,7 @@
 
 #include "reconfig/collision/detect_collisions.h"
 #include "reconfig/common/input_error.h"
+#include "reconfig/motion/key_error.h"
 #include "reconfig/resolve/key_dofs.h"
 #include "reconfig/scene/edits.h"
 #include "resolve/detail/descent_space.h"
@@ -74,9 +75,9 @@ bool is_keyframed(const scene::Reconfigurable& scene, int transition, int part) 
   return it != tracks.end() && std::holds_alternative<scene::KeyframedTrack>(it->second);
 }
 
-/// Inserts a translation key (and a rotation key if the part turns) at the severity time `t`
-/// unless the part has an inner key near it (within an eighth of the window): a key elsewhere
-/// in the window moves the part at t only a little.
+/// Inserts a translation key (and a rotation key if the part has a rotation track) at the
+/// severity time `t` unless the part has an inner key near it (within an eighth of the
+/// window): a key elsewhere in the window moves the part at t only a little.
 std::vector<std::string> ensure_inner_keys(scene::Reconfigurable& scene, int transition, int part, Window window,
                                            double t) {
   std::vector<std::string> inserted;
@@ -112,12 +113,26 @@ double pair_size(const scene::Reconfigurable& scene, Pair pair) {
   return std::max(diagonal(pair.first), diagonal(pair.second));
 }
 
-/// The objective at z, or +infinity where z makes no valid design.
+/// Asks the caller's progress callback, at every energy evaluation, whether to go on.
+struct Cancellation {
+  const ProgressCallback& progress;
+  double fraction = 0;  ///< reported: the round's share of the rounds
+  bool cancelled = false;
+  bool requested() {
+    if (!cancelled && !report_progress(progress, fraction)) cancelled = true;
+    return cancelled;
+  }
+};
+
+/// The objective at z, or +infinity where z makes no valid design (or once cancelled).
 double energy_at(const detail::DescentSpace& space, const Eigen::VectorXd& z, const EnergyObjective& objective,
-                 ShapeCache& shapes) {
+                 ShapeCache& shapes, Cancellation& cancel) {
+  if (cancel.requested()) return std::numeric_limits<double>::infinity();
   try {
     return detail::evaluate(objective, space.at(z), shapes).energy;
   } catch (const InputError&) {
+    return std::numeric_limits<double>::infinity();
+  } catch (const motion::KeyError&) {
     return std::numeric_limits<double>::infinity();
   }
 }
@@ -147,17 +162,17 @@ Eigen::VectorXd feasible_direction(const Eigen::VectorXd& g, double e0, double p
 /// Gradient descent of `objective` over the keys of `movable` from `scene`.
 scene::Reconfigurable descend_with(scene::Reconfigurable scene, ShapeCache& shapes, const AutoResolveRequest& request,
                                    const EnergyObjective& objective, const std::vector<int>& movable, double size,
-                                   int& steps) {
+                                   Cancellation& cancel, int& steps) {
   const int tr = request.transition;
   const double clearance = std::max(4 * request.detector.tolerance, 0.01 * size);
   const DofSelection selection{.handles = true, .end_handles = false, .rotations = true, .times = request.move_times};
   ObjectiveEnergy energy = detail::evaluate(objective, scene, shapes);
   steps = 0;
-  for (int step = 0; step < request.max_steps && energy.energy > 0; ++step) {
+  for (int step = 0; step < request.max_steps && energy.energy > 0 && !cancel.requested(); ++step) {
     const detail::DescentSpace space(scene, tr, movable, selection, size);
     const Eigen::VectorXd g = space.gradient(scene, energy);
     if (g.norm() == 0 || !std::isfinite(g.norm())) break;
-    const auto at = [&](const Eigen::VectorXd& z) { return energy_at(space, z, objective, shapes); };
+    const auto at = [&](const Eigen::VectorXd& z) { return energy_at(space, z, objective, shapes, cancel); };
     const Eigen::VectorXd d = feasible_direction(g, energy.energy, 1e-5 * size, at);
     if (d.norm() == 0) break;
     const double alpha = detail::line_search([&](double a) { return at(a * d); }, energy.energy, size, clearance);
@@ -173,9 +188,10 @@ scene::Reconfigurable descend_with(scene::Reconfigurable scene, ShapeCache& shap
 /// move (moving one part may be what the design allows: a drawer in its runners, a door on
 /// its hinge), keeping the result whose objective — the pair and what its moving parts may
 /// run into — is lowest.
-RoundOutcome descend(scene::Reconfigurable scene, ShapeCache& shapes, const AutoResolveRequest& request, Pair pair,
-                     const std::vector<Window>& windows, ResolveRound round) {
+RoundOutcome descend(const scene::Reconfigurable& original, ShapeCache& shapes, const AutoResolveRequest& request,
+                     Pair pair, const std::vector<Window>& windows, ResolveRound round, Cancellation& cancel) {
   const int tr = request.transition;
+  scene::Reconfigurable scene = original;
   std::vector<int> movable;
   for (int part : {pair.first, pair.second})
     if (is_keyframed(scene, tr, part)) movable.push_back(part);
@@ -195,16 +211,22 @@ RoundOutcome descend(scene::Reconfigurable scene, ShapeCache& shapes, const Auto
   double best_energy = std::numeric_limits<double>::infinity();
   for (const std::vector<int>& parts : choices) {
     int steps = 0;
-    scene::Reconfigurable moved = descend_with(scene, shapes, request, objective, parts, size, steps);
+    scene::Reconfigurable moved = descend_with(scene, shapes, request, objective, parts, size, cancel, steps);
     const double e = detail::evaluate(objective, moved, shapes).energy;
     if (e < best_energy) {
       best_energy = e;
       best = std::move(moved);
       round.steps = steps;
     }
-    if (e == 0) break;
+    if (e == 0 || cancel.cancelled) break;
   }
-  round.energy_after = detail::evaluate(own, *best, shapes).energy;
+  const double after = best ? detail::evaluate(own, *best, shapes).energy : before.energy;
+  if (cancel.cancelled || !(after < before.energy)) {  // nothing gained: not even the inserted keys stay
+    round.inserted_keys.clear();
+    round.steps = 0;
+    return {original, round};
+  }
+  round.energy_after = after;
   return {std::move(*best), round};
 }
 
@@ -246,7 +268,13 @@ AutoResolveResult auto_resolve(const scene::Reconfigurable& input, const AutoRes
     round.round = r;
     round.pair = {chosen.first, chosen.second};
     round.intervals_before = static_cast<int>(intervals.size());
-    RoundOutcome outcome = descend(result.scene, shapes, request, chosen, windows.at(chosen), round);
+    Cancellation cancel{request.progress, static_cast<double>(r) / request.max_rounds};
+    RoundOutcome outcome = descend(result.scene, shapes, request, chosen, windows.at(chosen), round, cancel);
+    if (cancel.cancelled) {
+      result.cancelled = true;
+      result.stopped_because = "cancelled";
+      break;
+    }
     result.scene = std::move(outcome.scene);
     if (!(outcome.round.energy_after < outcome.round.energy_before)) stuck.insert(chosen);
     else stuck.clear();  // the design changed: other pairs may move again

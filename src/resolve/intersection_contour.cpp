@@ -21,6 +21,8 @@ Triangle triangle_of(const geometry::TriangleBvh& tree, int f, const Eigen::Isom
           to_frame * Eigen::Vector3d(V.row(F(f, 2)))};
 }
 
+Eigen::Vector3d unit_normal(const Triangle& t) { return (t[1] - t[0]).cross(t[2] - t[0]).normalized(); }
+
 double distance_to_segment(const Eigen::Vector3d& p, const Eigen::Vector3d& e0, const Eigen::Vector3d& e1) {
   const Eigen::Vector3d d = e1 - e0;
   const double len2 = d.squaredNorm();
@@ -28,19 +30,30 @@ double distance_to_segment(const Eigen::Vector3d& p, const Eigen::Vector3d& e0, 
   return (e0 + s * d - p).norm();
 }
 
-/// The edge (of either triangle) that point p of their intersection lies on: the nearest of the
-/// six, in a's frame. Returns (edge part, corner index k of edge k→k+1).
+/// The edge (of either triangle) that point p of their intersection lies on, in a's frame:
+/// (edge part, corner index k of edge k→k+1). Where p lies on several (a corner, or edges of
+/// both triangles) the one crossing the other triangle's plane most steeply is taken: an edge
+/// lying in that plane would make the slide of p along it unbounded.
 std::pair<int, int> edge_through(const Eigen::Vector3d& p, const Triangle& ta, const Triangle& tb) {
+  std::array<double, 6> distance;
+  double nearest = std::numeric_limits<double>::infinity();
+  for (int e = 0; e < 6; ++e) {
+    const Triangle& t = e < 3 ? ta : tb;
+    distance[e] = distance_to_segment(p, t[e % 3], t[(e % 3 + 1) % 3]);
+    nearest = std::min(nearest, distance[e]);
+  }
+  const double scale = 1 + p.cwiseAbs().maxCoeff();
+  const std::array<Eigen::Vector3d, 2> normal = {unit_normal(tb), unit_normal(ta)};  // the plane each part's edge crosses
   std::pair<int, int> best{0, 0};
-  double best_distance = std::numeric_limits<double>::infinity();
-  for (int part = 0; part < 2; ++part) {
-    const Triangle& t = part == 0 ? ta : tb;
-    for (int k = 0; k < 3; ++k) {
-      const double d = distance_to_segment(p, t[k], t[(k + 1) % 3]);
-      if (d < best_distance) {
-        best_distance = d;
-        best = {part, k};
-      }
+  double steepest = -1;
+  for (int e = 0; e < 6; ++e) {
+    if (distance[e] > nearest + 1e-12 * scale) continue;
+    const Triangle& t = e < 3 ? ta : tb;
+    const Eigen::Vector3d d = t[(e % 3 + 1) % 3] - t[e % 3];
+    const double crossing = d.norm() > 0 ? std::abs(normal[e / 3].dot(d)) / d.norm() : 0.0;
+    if (crossing > steepest) {
+      steepest = crossing;
+      best = {e / 3, e % 3};
     }
   }
   return best;
@@ -95,8 +108,6 @@ double edge_weight(const Triangle& t, int f, const PartShape& shape, const Eigen
   }
   return 1;
 }
-
-Eigen::Vector3d unit_normal(const Triangle& t) { return (t[1] - t[0]).cross(t[2] - t[0]).normalized(); }
 
 /// Links segment ends that are the same edge crossing the same triangle into polylines.
 std::vector<ContourPolyline> chain(const std::vector<ContourSegment>& segments) {

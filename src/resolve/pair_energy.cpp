@@ -67,13 +67,6 @@ double severity_time(const std::vector<EnergySample>& samples, double t0, double
 
 }  // namespace
 
-EnergySample energy_sample(const scene::Reconfigurable& scene, ShapeCache& shapes, int transition, int part_a,
-                           int part_b, double t) {
-  const PartShape& a = shapes.shape(scene, part_a);
-  const PartShape& b = shapes.shape(scene, part_b);
-  return sample_at(scene, a, b, transition, part_a, part_b, t);
-}
-
 PairEnergy pair_energy(const scene::Reconfigurable& scene, ShapeCache& shapes, const PairEnergyRequest& request) {
   const PartShape& a = shapes.shape(scene, request.part_a);
   const PartShape& b = shapes.shape(scene, request.part_b);

@@ -97,6 +97,20 @@ TEST_F(StudioResolve, ScriptsHintSlideAndResolve) {
   EXPECT_THROW(run_script(*frontend_, "slide-hint abc\n", "bad amount"), ScriptError);
 }
 
+TEST_F(StudioResolve, AHintIsForTheDesignItWasGivenFor) {
+  ASSERT_TRUE(studio().request_hint()) << studio().status();
+  // Another edit: the hint no longer describes the design, and the slider does not apply it.
+  studio().set_time(0.5);
+  ASSERT_TRUE(studio().insert_key()) << studio().status();
+  EXPECT_FALSE(studio().slide_along_hint(0.1));
+  EXPECT_NE(studio().status().find("press H"), std::string::npos) << studio().status();
+  // Opening a design drops the hint (it named parts of the other one).
+  ASSERT_TRUE(studio().request_hint()) << studio().status();
+  ASSERT_TRUE(studio().open(bench_table_copy())) << studio().status();
+  EXPECT_FALSE(studio().resolution_hint().has_value());
+  frontend_->run_frame();
+}
+
 TEST_F(StudioResolve, NoHintWithoutACollision) {
   studio().select_part(studio().document()->scene().find_part("seat"));
   EXPECT_FALSE(studio().request_hint());

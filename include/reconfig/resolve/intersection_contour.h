@@ -20,7 +20,8 @@ struct ContourPoint {
   int edge_part = 0;  ///< 0: the edge is part a's and the triangle part b's; 1: the reverse
   std::array<int, 2> edge{-1, -1};  ///< the edge's vertex indices in its part's mesh, ascending
   int triangle = -1;                ///< the crossed triangle, in the other part's mesh
-  Eigen::Vector3d edge_direction = Eigen::Vector3d::Zero();  ///< world, the edge's vector
+  /// World, the edge's vector as its triangle runs (F(f, k) → F(f, k + 1); `edge` is sorted).
+  Eigen::Vector3d edge_direction = Eigen::Vector3d::Zero();
   Eigen::Vector3d plane_normal = Eigen::Vector3d::Zero();    ///< world, unit normal of the triangle
 };
 

@@ -42,7 +42,7 @@ struct PairEnergyRequest {
   int part_a = 0, part_b = 1;
   double t0 = 0, t1 = 1;
   /// The trapezoid rule on uniform samples is refined (the number of intervals doubled) until
-  /// a refinement changes E by less than this fraction of it.
+  /// two doublings in a row each change E by less than this fraction of it.
   double relative_accuracy = 0.01;
   int min_intervals = 16;
   int max_intervals = 1024;
@@ -51,9 +51,5 @@ struct PairEnergyRequest {
 /// The energy of parts a and b over [t0, t1] of a transition. Samples are evaluated in
 /// parallel; the result does not depend on the number of threads.
 PairEnergy pair_energy(const scene::Reconfigurable& scene, ShapeCache& shapes, const PairEnergyRequest& request);
-
-/// e(t) at one time, with its gradient.
-EnergySample energy_sample(const scene::Reconfigurable& scene, ShapeCache& shapes, int transition, int part_a,
-                           int part_b, double t);
 
 }  // namespace reconfig::resolve

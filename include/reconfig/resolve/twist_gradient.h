@@ -13,8 +13,8 @@ struct TwistGradient {
   Eigen::Vector3d force = Eigen::Vector3d::Zero();
   Eigen::Vector3d torque = Eigen::Vector3d::Zero();
 
-  /// Adds the gradient h of f with respect to the position of a point y that moves with the
-  /// part (`weight` h for the motion of y, so torque gains y × h).
+  /// Adds h, the gradient of f with respect to the position of a point y that moves with the
+  /// part: the force gains h and the torque y × h.
   void add_point(const Eigen::Vector3d& y, const Eigen::Vector3d& h) {
     force += h;
     torque += y.cross(h);

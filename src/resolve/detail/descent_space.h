@@ -27,7 +27,7 @@ class DescentSpace {
   Eigen::VectorXd gradient(const scene::Reconfigurable& scene, const ObjectiveEnergy& energy) const;
 
  private:
-  const scene::Reconfigurable& base_;
+  scene::Reconfigurable base_;  ///< a copy: the descent replaces the design it started from
   int transition_;
   std::vector<int> parts_;
   std::vector<std::vector<KeyDof>> dofs_;

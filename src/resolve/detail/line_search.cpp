@@ -45,14 +45,15 @@ double line_search(const std::function<double(double)>& energy, double e0, doubl
     steps.push_back(reach / std::pow(2.0, k));
     values.push_back(energy(steps.back()));
   }
-  const int best = static_cast<int>(std::min_element(values.begin(), values.end()) - values.begin());
+  int best = static_cast<int>(std::min_element(values.begin(), values.end()) - values.begin());
   if (!(values[best] < e0)) return 0;
-  const double shorter = best + 1 < kHalvings ? steps[best + 1] : 0.0;
   if (values[best] == 0) {
-    const double zero = first_zero(energy, shorter, steps[best]);
+    while (best + 1 < kHalvings && values[best + 1] == 0) ++best;  // the shortest zero step scanned
+    const double zero = first_zero(energy, best + 1 < kHalvings ? steps[best + 1] : 0.0, steps[best]);
     const double cleared = std::min(reach, zero + clearance);
     return energy(cleared) == 0 ? cleared : zero;
   }
+  const double shorter = best + 1 < kHalvings ? steps[best + 1] : 0.0;
   const auto [step, value] = golden_section(energy, shorter, best > 0 ? steps[best - 1] : reach);
   return value < values[best] ? step : steps[best];
 }
