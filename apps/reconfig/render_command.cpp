@@ -16,7 +16,9 @@
 #include "reconfig/render/scene_draw_list.h"
 #include "reconfig/scene/scene_file.h"
 #include "reconfig/view/ghost_sampling.h"
+#include "reconfig/view/saved_camera.h"
 #include "reconfig/view/scene_bounds.h"
+#include "reconfig/view/working_side.h"
 
 namespace reconfig::cli {
 namespace {
@@ -55,6 +57,27 @@ std::vector<double> parse_numbers(const std::string& text, const std::string& op
     }
   }
   return numbers;
+}
+
+/// The --camera angles framing `bounds`, else the scene's saved view, else a framed view of
+/// its working side (as the studio opens it).
+view::Camera render_camera(const scene::Reconfigurable& scene, const std::string& option,
+                           const Eigen::AlignedBox3d& bounds, double aspect) {
+  if (option.empty() && scene.view) return view::camera_from(*scene.view, bounds);
+  view::Camera camera;
+  view::aim_at_working_side(camera, scene);
+  double distance = 0;
+  if (!option.empty()) {
+    const std::vector<double> numbers = parse_numbers(option, "--camera");
+    if (numbers.size() < 2 || numbers.size() > 3 || std::abs(numbers[1]) > 89 || (numbers.size() == 3 && numbers[2] <= 0))
+      throw InputError("", "--camera", "expected yaw,pitch[,distance]: degrees, |pitch| ≤ 89, distance > 0");
+    camera.yaw = numbers[0] * kDegree;
+    camera.pitch = numbers[1] * kDegree;
+    if (numbers.size() == 3) distance = numbers[2];
+  }
+  camera.frame_all(bounds, aspect);
+  if (distance > 0) camera.zoom(distance / camera.distance);
+  return camera;
 }
 
 int run_render(const RenderOptions& options) {
@@ -113,20 +136,7 @@ int run_render(const RenderOptions& options) {
   }
   request.grid = !options.no_grid;
 
-  view::Camera camera;
-  camera.yaw = 60 * kDegree;  // a 3/4 view from the front right (+y, +x), slightly above
-  camera.pitch = 25 * kDegree;
-  double distance = 0;
-  if (!options.camera.empty()) {
-    const std::vector<double> numbers = parse_numbers(options.camera, "--camera");
-    if (numbers.size() < 2 || numbers.size() > 3 || std::abs(numbers[1]) > 89 || (numbers.size() == 3 && numbers[2] <= 0))
-      throw InputError("", "--camera", "expected yaw,pitch[,distance]: degrees, |pitch| ≤ 89, distance > 0");
-    camera.yaw = numbers[0] * kDegree;
-    camera.pitch = numbers[1] * kDegree;
-    if (numbers.size() == 3) distance = numbers[2];
-  }
-  camera.frame_all(bounds, static_cast<double>(width) / height);
-  if (distance > 0) camera.zoom(distance / camera.distance);
+  const view::Camera camera = render_camera(scene, options.camera, bounds, static_cast<double>(width) / height);
 
   render::EglContext context;
   render::Renderer renderer({.samples = options.msaa});
@@ -163,7 +173,7 @@ void add_render_command(CLI::App& app, int& exit_code) {
   command->add_flag("--intervals", options->intervals, "Draw the collision interval boxes that overlap the time");
   command->add_option("--samples", options->samples, "Time samples of the collision check behind --intervals")
       ->check(CLI::Range(2, 100000));
-  command->add_option("--camera", options->camera, "yaw,pitch[,distance] (degrees; default 60,25, framing all parts)");
+  command->add_option("--camera", options->camera, "yaw,pitch[,distance] (degrees, framing all parts; default: the scene's saved view, else its working side)");
   command->add_option("--size", options->size, "Image size WIDTHxHEIGHT (default 1280x720)");
   command->add_option("--select", options->selected, "Part to highlight (repeatable)");
   command->add_flag("--no-grid", options->no_grid, "Leave out the ground grid");

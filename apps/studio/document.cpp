@@ -110,11 +110,12 @@ bool Document::step_history(bool forward) {
   return true;
 }
 
-void Document::save() { save_as(file_); }
+void Document::save() { save_as(file_, scene_->view); }
 
-void Document::save_as(const fs::path& file) {
+void Document::save_as(const fs::path& file, const std::optional<scene::SavedView>& view) {
   // Saving may turn edited geometry into mesh files: that is a new version of the scene.
   auto next = std::make_shared<scene::Reconfigurable>(*scene_);
+  next->view = view;
   scene::save_scene(*next, file);
   scene_ = std::move(next);
   file_ = fs::absolute(file);

@@ -57,7 +57,9 @@ class Document {
   /// Writes the scene atomically to its file (or to `file`, which it then belongs to) and
   /// drops the autosave. @throws InputError when the file cannot be written
   void save();
-  void save_as(const std::filesystem::path& file);
+  /// Saves with `view` as the scene's camera. The camera is no edit: it has no undo step, and
+  /// looking around does not make the design modified; it is kept whenever the design is saved.
+  void save_as(const std::filesystem::path& file, const std::optional<scene::SavedView>& view);
 
   /// Writes the autosave when the scene changed since the last one and `interval` has passed
   /// since then (or since the first call: `now` is the caller's clock, which may be simulated).

@@ -12,7 +12,9 @@
 #include "keys.h"
 #include "panel_window.h"
 #include "reconfig/common/input_error.h"
+#include "reconfig/view/saved_camera.h"
 #include "reconfig/view/scene_bounds.h"
+#include "reconfig/view/working_side.h"
 
 namespace reconfig::studio {
 
@@ -53,7 +55,7 @@ bool Studio::save() {
 bool Studio::save_as(const fs::path& file) {
   if (!document_) return false;
   try {
-    document_->save_as(file);
+    document_->save_as(file, view::saved_view(camera_));
   } catch (const std::exception& error) {
     set_status(fmt::format("not saved: {}", error.what()), true);
     return false;
@@ -77,7 +79,14 @@ void Studio::reset_view_for_new_document() {
   hint_.reset();  // hints and resolutions belong to the design they were computed for
   if (auto_resolve_) auto_resolve_->cancel = true;
   auto_resolve_.reset();
-  frame_pending_ = true;
+  // The camera it was saved with, else a view of its working side, framed at the first draw.
+  const scene::Reconfigurable& scene = document_->scene();
+  frame_pending_ = !scene.view;
+  if (scene.view) {
+    camera_ = view::camera_from(*scene.view, shown_bounds());
+  } else {
+    view::aim_at_working_side(camera_, scene);
+  }
 }
 
 void Studio::set_status(std::string message, bool error) {
@@ -325,19 +334,18 @@ bool Studio::step_history(bool forward) {
   return true;
 }
 
+Eigen::AlignedBox3d Studio::shown_bounds() const {
+  const scene::Reconfigurable& scene = document_->scene();
+  // The whole motion, not only the current instant, so nothing leaves the view when playing.
+  if (active_transition_ >= 0) return view::scene_bounds_over(scene, active_transition_, 9);
+  return view::scene_bounds_in_state(scene, active_state_);
+}
+
 void Studio::frame_all() {
   if (!document_) return;
-  const scene::Reconfigurable& scene = document_->scene();
-  Eigen::AlignedBox3d box;
-  // The whole motion, not only the current instant, so nothing leaves the view when playing.
-  if (active_transition_ >= 0) {
-    for (int i = 0; i <= 8; ++i) box.extend(view::scene_bounds_at(scene, active_transition_, i / 8.0));
-  } else {
-    box = view::scene_bounds_in_state(scene, active_state_);
-  }
   const ImVec2 size{layout_.viewport_max.x - layout_.viewport_min.x, layout_.viewport_max.y - layout_.viewport_min.y};
   const double aspect = size.y > 0 ? size.x / size.y : 1.5;
-  camera_.frame_all(box, aspect);
+  camera_.frame_all(shown_bounds(), aspect);
   frame_pending_ = false;
 }
 

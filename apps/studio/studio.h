@@ -223,6 +223,8 @@ class Studio {
   int pick_part(const view::Ray& ray) const;
 
   void reset_view_for_new_document();
+  /// What "frame all" frames: the active transition's whole motion, else the active state.
+  Eigen::AlignedBox3d shown_bounds() const;
   bool step_history(bool forward);
   void advance_playback(double seconds);
   void set_status(std::string message, bool error = false);

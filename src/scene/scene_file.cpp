@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cctype>
+#include <cmath>
 #include <map>
 #include <nlohmann/json.hpp>
 
@@ -292,8 +293,19 @@ CollisionSettings read_collision_settings(const JsonCursor& c) {
   return settings;
 }
 
+SavedView read_view(const JsonCursor& c) {
+  c.expect_object({"target", "distance", "yaw_degrees", "pitch_degrees"});
+  SavedView view;
+  view.target = c["target"].as_vector3();
+  view.distance = c["distance"].as_positive();
+  view.yaw_degrees = c["yaw_degrees"].as_number();
+  view.pitch_degrees = c["pitch_degrees"].as_number();
+  if (!(std::abs(view.pitch_degrees) < 90)) c["pitch_degrees"].fail("must be strictly between -90 and 90");
+  return view;
+}
+
 Reconfigurable read_scene(const JsonCursor& root, const fs::path& base_dir, const SceneLoadOptions& options) {
-  root.expect_object({"format", "version", "units", "parts", "states", "transitions", "collision"});
+  root.expect_object({"format", "version", "units", "parts", "states", "transitions", "collision", "view"});
   if (root["format"].as_string() != kFormat)
     root["format"].fail(fmt::format("expected \"{}\"", kFormat));
   const JsonCursor version = root["version"];
@@ -314,6 +326,7 @@ Reconfigurable read_scene(const JsonCursor& root, const fs::path& base_dir, cons
       scene.transitions.push_back(read_transition(transitions[i], base_dir));
   }
   if (root.has("collision")) scene.collision = read_collision_settings(root["collision"]);
+  if (root.has("view")) scene.view = read_view(root["view"]);
   compile_linkage_drives(scene);
   validate_scene(scene);
   return scene;
@@ -451,6 +464,11 @@ std::string scene_to_json(const Reconfigurable& scene, const fs::path& base_dir)
     root["transitions"].push_back(entry);
   }
   if (!scene.collision.empty()) root["collision"] = collision_settings_json(scene.collision);
+  if (scene.view)
+    root["view"] = {{"target", vector_json(scene.view->target)},
+                    {"distance", scene.view->distance},
+                    {"yaw_degrees", scene.view->yaw_degrees},
+                    {"pitch_degrees", scene.view->pitch_degrees}};
   return root.dump(2) + "\n";
 }
 

@@ -76,8 +76,15 @@ void Camera::frame_all(const Eigen::AlignedBox3d& box, double aspect, double mar
     needed = std::max({needed, std::abs(o.dot(r)) / tan_x - o.dot(f), std::abs(o.dot(u)) / tan_y - o.dot(f)});
   }
   distance = std::max(needed, 1.05 * radius);  // the eye stays outside the box's sphere
-  near_plane = std::max(distance - radius, 0.0) * 0.5 + distance * 1e-3;
-  far_plane = (distance + radius) * 20;  // room for the ground grid around the box
+  fit_planes(box);
+}
+
+void Camera::fit_planes(const Eigen::AlignedBox3d& box) {
+  if (box.isEmpty()) return;
+  const double radius = std::max(0.5 * box.diagonal().norm(), 1e-6);
+  const double reach = (eye() - box.center()).norm();  // the eye to the box's center
+  near_plane = std::max(reach - radius, 0.0) * 0.5 + distance * 1e-3;
+  far_plane = (reach + radius) * 20;  // room for the ground grid around the box
 }
 
 }  // namespace reconfig::view

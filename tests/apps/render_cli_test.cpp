@@ -5,6 +5,8 @@
 #define STB_IMAGE_IMPLEMENTATION  // the only user of stb_image in this test executable
 #include <stb/stb_image.h>
 
+#include <fstream>
+#include <iterator>
 #include <memory>
 #include <set>
 
@@ -56,6 +58,47 @@ TEST(RenderCli, StateCameraAndSelection) {
   const Png png = read_png(dir / "table.png");
   EXPECT_EQ(png.width, 96);
   EXPECT_GT(png.colors.size(), 10u);
+}
+
+std::string file_bytes(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+/// A wall and a drawer that slides out toward −x; with `view`, the scene's saved view.
+std::filesystem::path drawer_scene(const std::filesystem::path& dir, const std::string& view = "") {
+  const auto file = dir / "drawer.json";
+  std::ofstream(file) << R"({"format": "reconfig-scene", "version": 1,
+    "parts": [{"name": "wall", "box": {"size": [0.1, 2, 1]}},
+              {"name": "drawer", "box": {"size": [1, 0.6, 0.3]}, "color": [0.4, 0.6, 0.5]}],
+    "states": [{"name": "in", "poses": {"wall": {"translation": [0.6, 0, 0]}}},
+               {"name": "out", "poses": {"wall": {"translation": [0.6, 0, 0]}, "drawer": {"translation": [-0.8, 0, 0]}}}])"
+                      << view << "}";
+  return file;
+}
+
+std::string render_drawer(const std::filesystem::path& scene, const std::string& camera) {
+  const auto out = scene.parent_path() / "drawer.png";
+  const auto run = run_reconfig("render " + scene.string() + camera + " --size 96x64 --msaa 0 -o " + out.string());
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  return file_bytes(out);
+}
+
+// Without --camera the picture is taken from the side the drawer slides out to (−x, turned
+// 30°, as the studio opens it), and a view saved in the scene wins over that.
+TEST(RenderCli, DefaultCameraLooksAtTheWorkingSideUnlessTheSceneSavedOne) {
+  const auto dir = testing::fresh_temp_dir();
+  const auto scene = drawer_scene(dir);
+  const std::string working_side = render_drawer(scene, "");
+  EXPECT_EQ(working_side, render_drawer(scene, " --camera 150,25"));
+  EXPECT_NE(working_side, render_drawer(scene, " --camera 60,25"));
+
+  const auto saved = drawer_scene(
+      dir, R"(, "view": {"target": [0, 0, 0.2], "distance": 3, "yaw_degrees": -90, "pitch_degrees": 10})");
+  const std::string from_saved = render_drawer(saved, "");
+  EXPECT_NE(from_saved, working_side);
+  EXPECT_EQ(from_saved, render_drawer(saved, ""));
+  EXPECT_EQ(render_drawer(saved, " --camera 150,25"), working_side) << "--camera wins over the saved view";
 }
 
 TEST(RenderCli, BadInputIsOneLineAndExitTwo) {

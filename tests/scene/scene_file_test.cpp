@@ -108,6 +108,18 @@ TEST(SceneFile, CollisionSettingsRoundTrip) {
   EXPECT_FALSE(json::parse(scene_to_json(parse(valid_scene()), fs::current_path())).contains("collision"));
 }
 
+TEST(SceneFile, SavedViewRoundTrips) {
+  json document = valid_scene();
+  document["view"] = {{"target", {0.5, -1, 0.25}}, {"distance", 3.5}, {"yaw_degrees", 60}, {"pitch_degrees", -20}};
+  const Reconfigurable scene = parse(document);
+  ASSERT_TRUE(scene.view);
+  EXPECT_EQ(*scene.view, (SavedView{Eigen::Vector3d(0.5, -1, 0.25), 3.5, 60, -20}));
+  EXPECT_EQ(json::parse(scene_to_json(scene, fs::current_path()))["view"], document["view"]);
+  // None given, none written.
+  EXPECT_FALSE(parse(valid_scene()).view);
+  EXPECT_FALSE(json::parse(scene_to_json(parse(valid_scene()), fs::current_path())).contains("view"));
+}
+
 TEST(SceneFile, SaveWritesAtomicallyAndKeepsMeshPathsRelative) {
   const fs::path dir = testing::fresh_temp_dir();
   fs::create_directories(dir / "meshes");
@@ -222,6 +234,19 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"empty frame", [](json& d) { d["collision"] = {{"frame", 0}}; }, "collision.frame", "a frame must last"},
         BadInput{"conservative as a number", [](json& d) { d["collision"] = {{"conservative", 1}}; },
                  "collision.conservative", "expected"},
+        BadInput{"view with zero distance",
+                 [](json& d) {
+                   d["view"] = {{"target", {0, 0, 0}}, {"distance", 0}, {"yaw_degrees", 0}, {"pitch_degrees", 0}};
+                 },
+                 "view.distance", "must be positive"},
+        BadInput{"view looking straight down",
+                 [](json& d) {
+                   d["view"] = {{"target", {0, 0, 0}}, {"distance", 1}, {"yaw_degrees", 0}, {"pitch_degrees", 90}};
+                 },
+                 "view.pitch_degrees", "between -90 and 90"},
+        BadInput{"view without a target",
+                 [](json& d) { d["view"] = {{"distance", 1}, {"yaw_degrees", 0}, {"pitch_degrees", 0}}; },
+                 "view.target", "missing required field"},
         BadInput{"unknown interpolation",
                  [](json& d) { d["transitions"][0]["tracks"]["lid"]["interpolation"] = "linear"; },
                  "transitions[0].tracks.lid.interpolation", "unknown interpolation"}),

@@ -350,6 +350,12 @@ TEST_F(StudioHeadless, DraggingABezierHandleReshapesThePath) {
   click(*studio().graph_edge_point(unfold));
   ASSERT_EQ(studio().active_transition(), unfold);
   click(studio().timeline_point(0.5));
+  // Seen from the side: from the front (the first view) the handle points at the camera, and
+  // its end sits on its key.
+  studio().camera().yaw = -1.0;
+  studio().camera().pitch = 0.45;
+  studio().frame_all();
+  frontend_->run_frame();
   const int backrest = scene.find_part("backrest");
   const auto on_backrest = visible_point(studio(), backrest);
   ASSERT_TRUE(on_backrest);

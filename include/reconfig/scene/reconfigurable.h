@@ -9,6 +9,7 @@
 #include "reconfig/geometry/mesh.h"
 #include "reconfig/scene/collision_settings.h"
 #include "reconfig/scene/part.h"
+#include "reconfig/scene/saved_view.h"
 #include "reconfig/scene/state.h"
 #include "reconfig/scene/transition.h"
 
@@ -23,6 +24,8 @@ struct Reconfigurable {
   std::vector<Transition> transitions;
   /// How its collisions are detected, as saved with it.
   CollisionSettings collision;
+  /// The camera it was last saved with, if any (not an edit: saving sets it, undo ignores it).
+  std::optional<SavedView> view;
 
   /// Index of the part / state / transition with that name, or -1.
   int find_part(const std::string& name) const;

@@ -55,6 +55,9 @@ struct Camera {
   /// (≥ 1) extra room, and the eye outside the box's bounding sphere. Sets near and far
   /// planes around the box. An empty box leaves the camera unchanged.
   void frame_all(const Eigen::AlignedBox3d& box, double aspect, double margin = 1.1);
+  /// Keeps the eye where it is and sets the near and far planes so that all of `box` lies
+  /// between them, with room behind it for the ground grid. An empty box leaves them unchanged.
+  void fit_planes(const Eigen::AlignedBox3d& box);
 };
 
 }  // namespace reconfig::view
