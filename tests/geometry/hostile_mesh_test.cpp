@@ -10,12 +10,16 @@
 #include <string>
 #include <vector>
 
+#include "glb_file.h"
 #include "reconfig/common/input_error.h"
 #include "reconfig/geometry/load_mesh.h"
 #include "support/test_data.h"
 
 namespace reconfig::geometry {
 namespace {
+
+using reconfig::testing::append_u32;
+using reconfig::testing::glb;
 
 /// `text` with the first `from` replaced by `to`, built by appending (GCC 12 warns falsely of
 /// overlapping copies, -Wrestrict, on std::string::replace with a literal here).
@@ -46,24 +50,6 @@ std::string gltf(const std::string& buffer, const std::string& nodes = R"([{"mes
          R"(}],"bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":48},{"buffer":0,"byteOffset":48,"byteLength":24}],
 "accessors":[{"bufferView":0,"componentType":5126,"count":4,"type":"VEC3","min":[0,0,0],"max":[1,1,1]},
 {"bufferView":1,"componentType":5123,"count":12,"type":"SCALAR"}])" + extra + "}";
-}
-
-void append_u32(std::string& out, std::uint32_t value) {
-  for (int k = 0; k < 4; ++k) out.push_back(static_cast<char>(value >> (8 * k) & 0xff));
-}
-
-/// A GLB with `json` and `binary` as its chunks (each padded to 4 bytes).
-std::string glb(std::string json, std::string binary) {
-  while (json.size() % 4) json += ' ';
-  while (binary.size() % 4) binary += '\0';
-  std::string out = "glTF";
-  append_u32(out, 2);
-  append_u32(out, static_cast<std::uint32_t>(12 + 8 + json.size() + 8 + binary.size()));
-  append_u32(out, static_cast<std::uint32_t>(json.size()));
-  out += "JSON" + json;
-  append_u32(out, static_cast<std::uint32_t>(binary.size()));
-  out += std::string("BIN\0", 4) + binary;
-  return out;
 }
 
 std::string embedded() {

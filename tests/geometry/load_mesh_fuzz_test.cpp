@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "glb_file.h"
 #include "mesh_test_helpers.h"
 #include "reconfig/common/input_error.h"
 #include "reconfig/geometry/load_mesh.h"
@@ -30,27 +31,12 @@
 namespace reconfig::geometry {
 namespace {
 
+using reconfig::testing::glb;
+
 struct Seed {
   std::string extension;
   std::string bytes;
 };
-
-void append_u32(std::string& out, std::uint32_t value) {
-  for (int k = 0; k < 4; ++k) out.push_back(static_cast<char>(value >> (8 * k) & 0xff));
-}
-
-/// A GLB with `json` and `binary` as its chunks (each padded to 4 bytes).
-std::string glb(std::string json, std::string binary) {
-  while (json.size() % 4) json += ' ';
-  while (binary.size() % 4) binary += '\0';
-  std::string out = "glTF";
-  append_u32(out, 2);
-  append_u32(out, static_cast<std::uint32_t>(12 + 8 + json.size() + 8 + binary.size()));
-  append_u32(out, static_cast<std::uint32_t>(json.size()));
-  out += "JSON" + json;
-  append_u32(out, static_cast<std::uint32_t>(binary.size()));
-  return out + std::string("BIN\0", 4) + binary;
-}
 
 std::vector<Seed> seeds() {
   const Mesh box = make_box({1, 2, 3});
