@@ -41,6 +41,9 @@ class Document {
   Document(scene::Reconfigurable scene, std::filesystem::path file, collision::CollisionServiceOptions options);
 
   const scene::Reconfigurable& scene() const { return *scene_; }
+  /// The current version itself, for work that outlives the frame (it never changes: an edit
+  /// makes a new one).
+  std::shared_ptr<const scene::Reconfigurable> shared_scene() const { return scene_; }
   const std::filesystem::path& file() const { return file_; }
   /// Differs from the file as opened or last saved: undoing back to that version is clean
   /// again. A recovered autosave is modified until saved.

@@ -6,6 +6,7 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <set>
 #include <variant>
 
 #include "studio.h"
@@ -57,9 +58,45 @@ bool same_keys(const scene::Track& a, const scene::Track& b) {
 
 }  // namespace
 
+namespace {
+
+/// The hint for `part` over `intervals` of `transition` of `scene` (version `version`).
+Studio::HintView compute_hint(const scene::Reconfigurable& scene, resolve::ShapeCache& shapes, int transition, int part,
+                              std::uint64_t version, const std::vector<collision::CollisionInterval>& intervals) {
+  Studio::HintView view;
+  view.transition = transition;
+  view.part = part;
+  view.version = version;
+  view.result = resolve::compute_hints(scene, shapes, {.transition = transition, .part = part, .intervals = intervals});
+  for (int i = 0; i < static_cast<int>(view.result.hints.size()); ++i)
+    if (view.result.hints[i].slope < 0 &&
+        (view.steepest < 0 || view.result.hints[i].slope < view.result.hints[view.steepest].slope))
+      view.steepest = i;
+  const auto track = scene.transitions[transition].tracks.find(scene.parts[part].name);
+  if (track != scene.transitions[transition].tracks.end())
+    if (const auto* keyed = std::get_if<scene::KeyframedTrack>(&track->second)) view.base = *keyed;
+  return view;
+}
+
+/// Triangles of the part and of every part it collides with in `intervals`.
+int hinted_triangles(const scene::Reconfigurable& scene, int part,
+                     const std::vector<collision::CollisionInterval>& intervals) {
+  std::set<int> parts{part};
+  for (const auto& ci : intervals) parts.insert(ci.parts.begin(), ci.parts.end());
+  int triangles = 0;
+  for (int p : parts) triangles += scene.parts[p].mesh.face_count();
+  return triangles;
+}
+
+}  // namespace
+
 bool Studio::request_hint() {
   if (!document_ || active_transition_ < 0 || selected_part_ < 0) {
     set_status("hint: select a part in an open transition first", true);
+    return false;
+  }
+  if (hint_job_) {
+    set_status("hint: still computing the last one");
     return false;
   }
   const auto snapshot = collisions();
@@ -75,26 +112,39 @@ bool Studio::request_hint() {
     hint_shapes_ = resolve::ShapeCache();
     hint_shape_meshes_ = document_->part_meshes();
   }
-  HintView view;
-  view.transition = active_transition_;
-  view.part = selected_part_;
-  view.version = document_->version();
-  view.result = resolve::compute_hints(scene, hint_shapes_,
-                                       {.transition = active_transition_, .part = selected_part_, .intervals = intervals});
-  for (int i = 0; i < static_cast<int>(view.result.hints.size()); ++i)
-    if (view.result.hints[i].slope < 0 &&
-        (view.steepest < 0 || view.result.hints[i].slope < view.result.hints[view.steepest].slope))
-      view.steepest = i;
-  if (const scene::KeyframedTrack* track = selected_keyframed_track()) view.base = *track;
+  if (hinted_triangles(scene, selected_part_, intervals) > options_.background_hint_triangles) {
+    hint_job_ = std::make_unique<std::future<HintView>>(
+        std::async(std::launch::async, [this, design = document_->shared_scene(), transition = active_transition_,
+                                        part = selected_part_, version = document_->version(), intervals] {
+          return compute_hint(*design, hint_shapes_, transition, part, version, intervals);
+        }));
+    set_status(fmt::format("hint: computing for {}...", scene.parts[selected_part_].name));
+    return true;
+  }
+  show_hint(compute_hint(scene, hint_shapes_, active_transition_, selected_part_, document_->version(), intervals));
+  return hint_->steepest >= 0;
+}
+
+void Studio::poll_hint() {
+  if (!hint_job_ || hint_job_->wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
+  HintView view = hint_job_->get();
+  hint_job_.reset();
+  if (!document_ || view.version != document_->version()) {
+    set_status("hint dropped: the design changed while it was computed (press H again)");
+    return;
+  }
+  show_hint(std::move(view));
+}
+
+void Studio::show_hint(HintView view) {
+  const std::string& part = document_->scene().parts[view.part].name;
   if (view.steepest < 0) {
-    set_status(fmt::format("hint: {} has no keys to move here (energy {:.3g})", scene.parts[selected_part_].name,
-                           view.result.energy));
+    set_status(fmt::format("hint: {} has no keys to move here (energy {:.3g})", part, view.result.energy));
   } else {
     set_status(fmt::format("hint: move the {} (energy {:.3g}, most severe at t = {:.3f})",
                            hint_name(view.result.hints[view.steepest]), view.result.energy, view.result.severity_time));
   }
   hint_ = std::move(view);
-  return hint_->steepest >= 0;
 }
 
 bool Studio::slide_along_hint(double amount, bool live) {

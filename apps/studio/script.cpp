@@ -236,6 +236,13 @@ class Runner {
       drag_key(args);
     } else if (action == "drag-handle") {
       drag_handle(args);
+    } else if (action == "wait-hint") {
+      const double seconds = args.empty() ? 60 : number(args, 0, "timeout in seconds");
+      const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(static_cast<long>(seconds * 1000));
+      while (studio().hint_pending()) {
+        if (std::chrono::steady_clock::now() > deadline) fail(fmt::format("the hint did not arrive within {} s", seconds));
+        frontend_.run_frame();
+      }
     } else if (action == "slide-hint") {
       if (!studio().slide_along_hint(number(args, 0, "amount along the hint"))) fail(studio().status());
       frontend_.run_frame();

@@ -76,6 +76,8 @@ void Studio::reset_view_for_new_document() {
   gizmo_drag_.reset();
   drag_preview_.reset();
   key_drag_.reset();
+  if (hint_job_) hint_job_->wait();  // it reads the shapes of the design being closed
+  hint_job_.reset();
   hint_.reset();  // hints and resolutions belong to the design they were computed for
   if (auto_resolve_) auto_resolve_->cancel = true;
   auto_resolve_.reset();
@@ -146,6 +148,7 @@ void Studio::frame(std::chrono::steady_clock::time_point now) {
   seconds_ += dt;
   if (playing_) advance_playback(dt);
   poll_auto_resolve();
+  poll_hint();
   handle_shortcuts();
   draw_menu_bar();
   draw_state_graph();

@@ -57,6 +57,9 @@ struct StudioOptions {
   double play_speed = 0.25;  ///< transition time per second while playing
   collision::CollisionServiceOptions collisions = editor_collision_options();
   scene::SceneLoadOptions load;  ///< `--allow-outside-paths`
+  /// A hint whose parts have more triangles than this is computed in the background (building
+  /// their shapes and sampling their contours takes a while) and shown when it is ready.
+  int background_hint_triangles = 20000;
 };
 
 class Studio {
@@ -137,6 +140,8 @@ class Studio {
   /// Cancels a running automatic resolution (nothing is changed).
   void cancel_auto_resolve();
   bool auto_resolving() const { return auto_resolve_ != nullptr; }
+  /// A hint is being computed in the background (see StudioOptions::background_hint_triangles).
+  bool hint_pending() const { return hint_job_ != nullptr; }
   /// The resolution hint on screen: the design version it is for, its part and result.
   struct HintView {
     int transition = -1, part = -1;
@@ -208,6 +213,10 @@ class Studio {
   bool hint_is_current() const;
   /// Takes the result of a finished automatic resolution (each frame).
   void poll_auto_resolve();
+  /// Takes a hint computed in the background (each frame).
+  void poll_hint();
+  /// Shows a computed hint: the status line and the arrows.
+  void show_hint(HintView view);
   void handle_shortcuts();
 
   // Viewport helpers.
@@ -303,6 +312,7 @@ class Studio {
     std::future<resolve::AutoResolveResult> result;
   };
   std::unique_ptr<AutoResolveJob> auto_resolve_;
+  std::unique_ptr<std::future<HintView>> hint_job_;  ///< a hint computed in the background
   bool quit_ = false;
 };
 

@@ -111,6 +111,33 @@ TEST_F(StudioResolve, AHintIsForTheDesignItWasGivenFor) {
   frontend_->run_frame();
 }
 
+TEST(StudioResolveBackground, ABigDesignsHintArrivesWithoutBlockingTheFrames) {
+  StudioOptions options;
+  options.autosave_interval = milliseconds(0);
+  options.background_hint_triangles = 0;  // every hint in the background
+  HeadlessFrontend frontend(1000, 700, options);
+  Studio& studio = frontend.studio();
+  ASSERT_TRUE(studio.open(bench_table_copy())) << studio.status();
+  studio.open_transition(studio.document()->scene().find_transition("unfold"));
+  studio.select_part(studio.document()->scene().find_part("backrest"));
+  frontend.run_frame();
+  ASSERT_TRUE(frontend.run_until_collisions_current(milliseconds(60000)));
+  ASSERT_TRUE(studio.request_hint()) << studio.status();
+  EXPECT_TRUE(studio.hint_pending());
+  EXPECT_NE(studio.status().find("computing"), std::string::npos) << studio.status();
+  run_script(frontend, "wait-hint 60\n", "wait for the hint");
+  ASSERT_FALSE(studio.hint_pending());
+  ASSERT_TRUE(studio.resolution_hint().has_value());
+  EXPECT_GT(studio.resolution_hint()->result.energy, 0);
+  EXPECT_NE(studio.status().find("hint: move the"), std::string::npos) << studio.status();
+  // A hint that arrives after an edit is dropped.
+  ASSERT_TRUE(studio.request_hint());
+  studio.set_time(0.5);
+  ASSERT_TRUE(studio.insert_key()) << studio.status();
+  for (int i = 0; i < 5000 && studio.hint_pending(); ++i) frontend.run_frame();
+  EXPECT_NE(studio.status().find("hint dropped"), std::string::npos) << studio.status();
+}
+
 TEST_F(StudioResolve, NoHintWithoutACollision) {
   studio().select_part(studio().document()->scene().find_part("seat"));
   EXPECT_FALSE(studio().request_hint());
