@@ -155,7 +155,7 @@ std::vector<ContourPolyline> chain(const std::vector<ContourSegment>& segments) 
 }  // namespace
 
 IntersectionContour intersection_contour(const PartShape& a, const Eigen::Isometry3d& place_a, const PartShape& b,
-                                         const Eigen::Isometry3d& place_b) {
+                                         const Eigen::Isometry3d& place_b, ContourPolylines polylines) {
   const Eigen::Isometry3d b_to_a = place_a.inverse() * place_b;
   const PairContext ctx{a, b, place_a};
   IntersectionContour contour;
@@ -180,7 +180,7 @@ IntersectionContour intersection_contour(const PartShape& a, const Eigen::Isomet
     return std::tie(x.triangle_a, x.triangle_b) < std::tie(y.triangle_a, y.triangle_b);
   });
   for (const ContourSegment& s : contour.segments) contour.length += s.weight * s.length();
-  contour.polylines = chain(contour.segments);
+  if (polylines == ContourPolylines::kChained) contour.polylines = chain(contour.segments);
   return contour;
 }
 

@@ -19,7 +19,7 @@ EnergySample sample_at(const scene::Reconfigurable& scene, const PartShape& a, c
                        int part_a, int part_b, double t) {
   const Eigen::Isometry3d place_a = placement(scene, transition, part_a, t);
   const Eigen::Isometry3d place_b = placement(scene, transition, part_b, t);
-  const IntersectionContour contour = intersection_contour(a, place_a, b, place_b);
+  const IntersectionContour contour = intersection_contour(a, place_a, b, place_b, ContourPolylines::kNone);
   const Penetration depth = penetration(a, place_a, b, place_b);
   EnergySample sample;
   sample.time = t;

@@ -56,11 +56,16 @@ struct IntersectionContour {
   double length = 0;  ///< ‖Ic‖: the sum of the segments' lengths times their weights
 };
 
+/// Whether `intersection_contour` chains its segments into polylines (the energy needs only the
+/// segments: chaining is for showing the curves).
+enum class ContourPolylines { kChained, kNone };
+
 /// The intersection contour of part a placed by `place_a` and part b placed by `place_b`
 /// (rigid maps from each part's rest frame to the world). Triangle pairs are found through the
 /// rest-frame trees; each pair's crossing is decided exactly (`geometry::intersect_triangles`).
 IntersectionContour intersection_contour(const PartShape& a, const Eigen::Isometry3d& place_a, const PartShape& b,
-                                         const Eigen::Isometry3d& place_b);
+                                         const Eigen::Isometry3d& place_b,
+                                         ContourPolylines polylines = ContourPolylines::kChained);
 
 /// ∂‖Ic‖/∂(rigid motion of part a), part b held still. Each end p of a segment slides along
 /// its edge as the parts move: dp = u_e(p) + d (n·(u_t(p) − u_e(p)))/(n·d) for the edge vector
