@@ -9,6 +9,7 @@
 #include <set>
 #include <variant>
 
+#include "reconfig/geometry/bounding_box.h"
 #include "studio.h"
 
 namespace reconfig::studio {
@@ -37,7 +38,7 @@ std::string hint_name(const resolve::Hint& hint) {
 double slide_reach(const resolve::Hint& hint, const geometry::Mesh& mesh) {
   if (hint.dof.kind == resolve::DofKind::kRotation) return M_PI / 2;
   if (hint.dof.kind == resolve::DofKind::kTime) return 0.1;
-  return 0.5 * (mesh.V.colwise().maxCoeff() - mesh.V.colwise().minCoeff()).norm();
+  return 0.5 * geometry::bounding_box(mesh.V).diagonal().norm();
 }
 
 /// Whether two tracks have the same keyframes (a screw track never counts as unchanged).
@@ -72,9 +73,7 @@ Studio::HintView compute_hint(const scene::Reconfigurable& scene, resolve::Shape
     if (view.result.hints[i].slope < 0 &&
         (view.steepest < 0 || view.result.hints[i].slope < view.result.hints[view.steepest].slope))
       view.steepest = i;
-  const auto track = scene.transitions[transition].tracks.find(scene.parts[part].name);
-  if (track != scene.transitions[transition].tracks.end())
-    if (const auto* keyed = std::get_if<scene::KeyframedTrack>(&track->second)) view.base = *keyed;
+  if (const scene::KeyframedTrack* keyed = scene.keyframed_track(transition, part)) view.base = *keyed;
   return view;
 }
 
@@ -290,10 +289,8 @@ void Studio::add_hint_arrows(render::DrawList& list) const {
   if (!hint_is_current()) return;  // after another edit the arrows would point from old places
   const scene::Reconfigurable& scene = document_->scene();
   const scene::Part& part = scene.parts[hint_->part];
-  const double length = 0.35 * (part.mesh.V.colwise().maxCoeff() - part.mesh.V.colwise().minCoeff()).norm();
-  const auto& tracks = scene.transitions[hint_->transition].tracks;
-  const auto found = tracks.find(part.name);
-  const auto* track = found == tracks.end() ? nullptr : std::get_if<scene::KeyframedTrack>(&found->second);
+  const double length = 0.35 * geometry::bounding_box(part.mesh.V).diagonal().norm();
+  const scene::KeyframedTrack* track = scene.keyframed_track(hint_->transition, hint_->part);
   if (!track) return;
   for (int i = 0; i < static_cast<int>(hint_->result.hints.size()); ++i) {
     const resolve::Hint& hint = hint_->result.hints[i];

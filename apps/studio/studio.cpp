@@ -287,10 +287,7 @@ bool Studio::insert_key() {
 
 const scene::KeyframedTrack* Studio::selected_keyframed_track() const {
   if (!document_ || active_transition_ < 0 || selected_part_ < 0) return nullptr;
-  const scene::Reconfigurable& scene = document_->scene();
-  const auto& tracks = scene.transitions[active_transition_].tracks;
-  const auto it = tracks.find(scene.parts[selected_part_].name);
-  return it == tracks.end() ? nullptr : std::get_if<scene::KeyframedTrack>(&it->second);
+  return document_->scene().keyframed_track(active_transition_, selected_part_);
 }
 
 bool Studio::delete_selected_key() {

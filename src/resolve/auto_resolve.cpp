@@ -13,6 +13,7 @@
 
 #include "reconfig/collision/detect_collisions.h"
 #include "reconfig/common/input_error.h"
+#include "reconfig/geometry/bounding_box.h"
 #include "reconfig/motion/key_error.h"
 #include "reconfig/resolve/key_dofs.h"
 #include "reconfig/scene/edits.h"
@@ -69,12 +70,6 @@ std::map<Pair, std::vector<Window>> pair_windows(const std::vector<collision::Co
   return windows;
 }
 
-bool is_keyframed(const scene::Reconfigurable& scene, int transition, int part) {
-  const auto& tracks = scene.transitions[transition].tracks;
-  const auto it = tracks.find(scene.parts[part].name);
-  return it != tracks.end() && std::holds_alternative<scene::KeyframedTrack>(it->second);
-}
-
 /// Inserts a translation key (and a rotation key if the part has a rotation track) at the
 /// severity time `t` unless the part has an inner key near it (within an eighth of the
 /// window): a key elsewhere in the window moves the part at t only a little.
@@ -106,10 +101,7 @@ std::vector<std::string> ensure_inner_keys(scene::Reconfigurable& scene, int tra
 
 /// Size of the pair: the larger of the two parts' box diagonals.
 double pair_size(const scene::Reconfigurable& scene, Pair pair) {
-  const auto diagonal = [&](int part) {
-    const Eigen::MatrixX3d& V = scene.parts[part].mesh.V;
-    return (V.colwise().maxCoeff() - V.colwise().minCoeff()).norm();
-  };
+  const auto diagonal = [&](int part) { return geometry::bounding_box(scene.parts[part].mesh.V).diagonal().norm(); };
   return std::max(diagonal(pair.first), diagonal(pair.second));
 }
 
@@ -194,7 +186,7 @@ RoundOutcome descend(const scene::Reconfigurable& original, ShapeCache& shapes, 
   scene::Reconfigurable scene = original;
   std::vector<int> movable;
   for (int part : {pair.first, pair.second})
-    if (is_keyframed(scene, tr, part)) movable.push_back(part);
+    if (scene.keyframed_track(tr, part)) movable.push_back(part);
   const EnergyObjective own{tr, {{pair, windows}}};
   const ObjectiveEnergy before = detail::evaluate(own, scene, shapes);
   round.energy_before = round.energy_after = before.energy;

@@ -15,12 +15,6 @@ namespace {
 
 using Twists = Eigen::Matrix<double, 6, Eigen::Dynamic>;
 
-const scene::KeyframedTrack* keyframed_track(const scene::Reconfigurable& scene, int transition, int part) {
-  const scene::Transition& tr = scene.transitions.at(transition);
-  const auto it = tr.tracks.find(scene.parts.at(part).name);
-  return it == tr.tracks.end() ? nullptr : std::get_if<scene::KeyframedTrack>(&it->second);
-}
-
 scene::KeyframedTrack& keyframed_track(scene::Reconfigurable& scene, int transition, int part) {
   auto& tracks = scene.transitions.at(transition).tracks;
   return std::get<scene::KeyframedTrack>(tracks.at(scene.parts.at(part).name));
@@ -91,7 +85,7 @@ void move_time(std::vector<double>& times, int key, double step, const std::stri
 std::vector<KeyDof> key_dofs(const scene::Reconfigurable& scene, int transition, int part,
                              const DofSelection& selection) {
   std::vector<KeyDof> dofs;
-  const scene::KeyframedTrack* track = keyframed_track(scene, transition, part);
+  const scene::KeyframedTrack* track = scene.keyframed_track(transition, part);
   if (!track) return dofs;
   add_translation_dofs(track->translation, selection, dofs);
   add_rotation_dofs(track->rotation, selection, dofs);
@@ -107,7 +101,7 @@ int dof_coordinates(const std::vector<KeyDof>& dofs) {
 Twists twist_jacobian(const scene::Reconfigurable& scene, int transition, int part, const std::vector<KeyDof>& dofs,
                       double t) {
   Twists J = Twists::Zero(6, dof_coordinates(dofs));
-  const scene::KeyframedTrack* track = keyframed_track(scene, transition, part);
+  const scene::KeyframedTrack* track = scene.keyframed_track(transition, part);
   if (!track || dofs.empty()) return J;
   const scene::Part& p = scene.parts.at(part);
   const motion::Pose pose = scene.pose_at(transition, part, t);

@@ -1,6 +1,7 @@
 #include "reconfig/scene/reconfigurable.h"
 
 #include <cassert>
+#include <variant>
 
 namespace reconfig::scene {
 namespace {
@@ -17,6 +18,12 @@ int find_by_name(const std::vector<Named>& items, const std::string& name) {
 int Reconfigurable::find_part(const std::string& name) const { return find_by_name(parts, name); }
 int Reconfigurable::find_state(const std::string& name) const { return find_by_name(states, name); }
 int Reconfigurable::find_transition(const std::string& name) const { return find_by_name(transitions, name); }
+
+const KeyframedTrack* Reconfigurable::keyframed_track(int transition, int part) const {
+  const auto& tracks = transitions.at(transition).tracks;
+  const auto it = tracks.find(parts.at(part).name);
+  return it == tracks.end() ? nullptr : std::get_if<KeyframedTrack>(&it->second);
+}
 
 motion::Pose Reconfigurable::pose_at(int transition, int part, double t) const {
   const Transition& tr = transitions.at(transition);

@@ -32,6 +32,9 @@ struct Reconfigurable {
   int find_state(const std::string& name) const;
   int find_transition(const std::string& name) const;
 
+  /// The keyframed track of part `part` in transition `transition`, or null when the part
+  /// holds still there or moves by screw poses.
+  const KeyframedTrack* keyframed_track(int transition, int part) const;
   /// Pose of part `part` at time t ∈ [0, 1] of transition `transition` (eq. 9 parameters).
   motion::Pose pose_at(int transition, int part, double t) const;
 

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <set>
 
+#include "reconfig/geometry/bounding_box.h"
+
 namespace reconfig::resolve::detail {
 namespace {
 
@@ -14,7 +16,7 @@ constexpr int kBoxSamples = 33;
 Eigen::AlignedBox3d swept_box(const scene::Reconfigurable& scene, int transition, int part,
                               const std::vector<Window>& windows) {
   const scene::Part& p = scene.parts[part];
-  const Eigen::AlignedBox3d rest(Eigen::Vector3d(p.mesh.V.colwise().minCoeff()), Eigen::Vector3d(p.mesh.V.colwise().maxCoeff()));
+  const Eigen::AlignedBox3d rest = geometry::bounding_box(p.mesh.V);
   Eigen::AlignedBox3d box;
   for (const Window& w : windows)
     for (int i = 0; i < kBoxSamples; ++i) {
