@@ -79,6 +79,8 @@ TriangleBvh::TriangleBvh(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F) :
     stack.push_back({left + 1, mid, task.end});
     stack.push_back({left, task.begin, mid});
   }
+  ordered_boxes_.resize(n);
+  for (int k = 0; k < n; ++k) ordered_boxes_[k] = boxes[order_[k]];
 }
 
 const Eigen::AlignedBox3d& TriangleBvh::bounds() const { return nodes_.front().box; }
@@ -95,8 +97,7 @@ void TriangleBvh::for_each_overlapping(const Eigen::AlignedBox3d& box, const std
     if (!node.box.intersects(box)) continue;
     if (node.left < 0) {
       for (int i = node.begin; i < node.end; ++i) {
-        const int f = order_[i];
-        if (triangle_box(V_, F_, f).intersects(box)) visit(f);
+        if (ordered_boxes_[i].intersects(box)) visit(order_[i]);
       }
     } else {
       stack[top++] = node.right;
@@ -116,7 +117,10 @@ void TriangleBvh::visit_overlapping_pairs(const TriangleBvh& other, const OtherN
   };
   std::vector<Item> stack{{0, 0, other_node_box(other.nodes_[0])}};
   stack.reserve(128);
+  // The boxes of the last leaf of `other` met: the depth-first descent meets one leaf of
+  // `other` against many of this tree's in a row.
   std::vector<Eigen::AlignedBox3d> other_boxes;
+  int other_boxes_leaf = -1;
   while (!stack.empty()) {
     const Item item = stack.back();
     stack.pop_back();
@@ -125,11 +129,14 @@ void TriangleBvh::visit_overlapping_pairs(const TriangleBvh& other, const OtherN
     if (!a.box.intersects(item.b_box)) continue;
     const bool a_leaf = a.left < 0, b_leaf = b.left < 0;
     if (a_leaf && b_leaf) {
-      other_boxes.clear();
-      for (int k = b.begin; k < b.end; ++k) other_boxes.push_back(other_triangle_box(other.order_[k]));
+      if (other_boxes_leaf != item.j) {
+        other_boxes.clear();
+        for (int k = b.begin; k < b.end; ++k) other_boxes.push_back(other_triangle_box(k));
+        other_boxes_leaf = item.j;
+      }
       for (int k = a.begin; k < a.end; ++k) {
         const int f = order_[k];
-        const Eigen::AlignedBox3d fbox = triangle_box(V_, F_, f);
+        const Eigen::AlignedBox3d& fbox = ordered_boxes_[k];
         if (!fbox.intersects(item.b_box)) continue;
         for (int l = b.begin; l < b.end; ++l)
           if (fbox.intersects(other_boxes[l - b.begin])) visit(f, other.order_[l]);
@@ -152,8 +159,7 @@ void TriangleBvh::visit_overlapping_pairs(const TriangleBvh& other, const OtherN
 void TriangleBvh::for_each_overlapping_pair(const TriangleBvh& other,
                                             const std::function<void(int f, int g)>& visit) const {
   visit_overlapping_pairs(
-      other, [](const Node& node) { return node.box; },
-      [&](int g) { return triangle_box(other.V_, other.F_, g); }, visit);
+      other, [](const Node& node) { return node.box; }, [&](int k) { return other.ordered_boxes_[k]; }, visit);
 }
 
 void TriangleBvh::for_each_overlapping_pair(const TriangleBvh& other, const Eigen::Isometry3d& other_to_this,
@@ -169,9 +175,10 @@ void TriangleBvh::for_each_overlapping_pair(const TriangleBvh& other, const Eige
     const double pad = 1e-12 * (c.cwiseAbs().maxCoeff() + h.maxCoeff());
     return Eigen::AlignedBox3d(c - h - Eigen::Vector3d::Constant(pad), c + h + Eigen::Vector3d::Constant(pad));
   };
-  const auto moved_triangle_box = [&](int g) {
+  const auto moved_triangle_box = [&](int k) {
+    const int g = other.order_[k];
     Eigen::AlignedBox3d box;
-    for (int k = 0; k < 3; ++k) box.extend(other_to_this * other.V_.row(other.F_(g, k)).transpose());
+    for (int c = 0; c < 3; ++c) box.extend(other_to_this * other.V_.row(other.F_(g, c)).transpose());
     return box;
   };
   visit_overlapping_pairs(other, node_box, moved_triangle_box, visit);

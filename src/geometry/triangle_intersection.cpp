@@ -8,6 +8,8 @@
 #include <CGAL/Intersections_3/Segment_3_Triangle_3.h>
 #include <CGAL/Intersections_3/Triangle_3_Triangle_3.h>
 
+#include <algorithm>
+#include <array>
 #include <cassert>
 #include <cmath>
 #include <limits>
@@ -142,26 +144,36 @@ void plane_crossings(const Vec3* t, const int* side, const Vec3* p, const Vec3& 
     if (i != lone) out[k++] = crossing(t[lone], t[i], s[lone], s[i], distance_error);
 }
 
-/// Fast construction for transversal triangles in general position (no corner exactly on the
-/// other's plane): the contact is the overlap of the two segments each triangle cuts from the
-/// other's plane, computed in doubles with error bounds. Returns false (the caller then
-/// constructs exactly) when the bounds cannot tell which ends bound the overlap, or whether
-/// it is a single point.
-bool transversal_contact(const Vec3* a, const Vec3* b, TriangleContact& contact) {
-  int side_a[3], side_b[3];  // exact sides of a's corners w.r.t. b's plane, and vice versa
-  const Point pa[3] = {point(a[0]), point(a[1]), point(a[2])}, pb[3] = {point(b[0]), point(b[1]), point(b[2])};
-  for (int i = 0; i < 3; ++i) {
-    side_a[i] = static_cast<int>(CGAL::orientation(pb[0], pb[1], pb[2], pa[i]));
-    side_b[i] = static_cast<int>(CGAL::orientation(pa[0], pa[1], pa[2], pb[i]));
-    if (side_a[i] == 0 || side_b[i] == 0) return false;
-  }
+/// The exact sides (−1, 0, +1) of t's corners with respect to the plane through p's corners
+/// (all 0 when p is degenerate).
+std::array<int, 3> sides_of(const Vec3* t, const Vec3* p) {
+  const Point p0 = point(p[0]), p1 = point(p[1]), p2 = point(p[2]);
+  return {static_cast<int>(CGAL::orientation(p0, p1, p2, point(t[0]))),
+          static_cast<int>(CGAL::orientation(p0, p1, p2, point(t[1]))),
+          static_cast<int>(CGAL::orientation(p0, p1, p2, point(t[2])))};
+}
+
+bool strictly_one_side(const std::array<int, 3>& side) {
+  return side[0] != 0 && side[0] == side[1] && side[1] == side[2];
+}
+
+enum class Transversal { kApart, kContact, kUndecided };
+
+/// Fast decision and construction for triangles in general position: every corner strictly
+/// off the other's plane (`side_a`: a's corners w.r.t. b's plane; `side_b` the reverse), each
+/// triangle crossing the other's plane. The contact is the overlap of the two segments each
+/// triangle cuts from the other's plane, computed in doubles with error bounds: kUndecided
+/// (the caller then decides and constructs exactly) when the bounds cannot tell which ends
+/// bound the overlap, whether it is empty, or whether it is a single point.
+Transversal transversal_contact(const Vec3* a, const Vec3* b, const std::array<int, 3>& side_a,
+                                const std::array<int, 3>& side_b, TriangleContact& contact) {
   const Vec3 na = (a[1] - a[0]).cross(a[2] - a[0]), nb = (b[1] - b[0]).cross(b[2] - b[0]);
   const Vec3 d = na.cross(nb);
-  if (!(d.norm() > 1e-6 * na.norm() * nb.norm())) return false;  // nearly parallel planes
+  if (!(d.norm() > 1e-6 * na.norm() * nb.norm())) return Transversal::kUndecided;  // nearly parallel planes
   const Vec3 dir = d.normalized();
   Crossing ca[2], cb[2];
-  plane_crossings(a, side_a, b, nb, ca);
-  plane_crossings(b, side_b, a, na, cb);
+  plane_crossings(a, side_a.data(), b, nb, ca);
+  plane_crossings(b, side_b.data(), a, na, cb);
   // Order each pair along the common line; a tie within the error bounds is undecidable.
   const auto param = [&](const Crossing& c) { return dir.dot(c.point); };
   const auto separated = [&](const Crossing& x, const Crossing& y) {
@@ -169,12 +181,17 @@ bool transversal_contact(const Vec3* a, const Vec3* b, TriangleContact& contact)
   };
   if (param(ca[0]) > param(ca[1])) std::swap(ca[0], ca[1]);
   if (param(cb[0]) > param(cb[1])) std::swap(cb[0], cb[1]);
-  if (!separated(ca[0], cb[0]) || !separated(ca[1], cb[1])) return false;
+  // One segment wholly before the other, beyond both segments' bounds: apart.
+  const double reach_a = 2.0 * std::max(ca[0].error, ca[1].error), reach_b = 2.0 * std::max(cb[0].error, cb[1].error);
+  if (param(ca[1]) + reach_a < param(cb[0]) - reach_b || param(cb[1]) + reach_b < param(ca[0]) - reach_a)
+    return Transversal::kApart;
+  if (!separated(ca[0], cb[0]) || !separated(ca[1], cb[1])) return Transversal::kUndecided;
   const Crossing& start = param(ca[0]) > param(cb[0]) ? ca[0] : cb[0];
   const Crossing& end = param(ca[1]) < param(cb[1]) ? ca[1] : cb[1];
-  if (!separated(start, end) || param(start) > param(end)) return false;
+  if (!separated(start, end) || param(start) > param(end)) return Transversal::kUndecided;
+  contact.intersect = true;
   contact.points = {start.point, end.point};
-  return true;
+  return Transversal::kContact;
 }
 
 }  // namespace
@@ -202,6 +219,15 @@ TriangleContact intersect_triangles(const Eigen::Vector3d& a0, const Eigen::Vect
   const Vec3 b[3] = {b0, b1, b2};
   TriangleContact contact;
   if (!all_finite(a, 3) || !all_finite(b, 3)) return contact;
+  // The common cases first, from the six exact sides: one triangle wholly beside the other's
+  // plane (then neither is degenerate, and they are not coplanar), or both crossing the other's
+  // plane in general position.
+  const std::array<int, 3> side_a = sides_of(a, b), side_b = sides_of(b, a);
+  if (strictly_one_side(side_a) || strictly_one_side(side_b)) return contact;
+  const auto nonzero = [](const std::array<int, 3>& side) { return side[0] != 0 && side[1] != 0 && side[2] != 0; };
+  if (nonzero(side_a) && nonzero(side_b) && transversal_contact(a, b, side_a, side_b, contact) != Transversal::kUndecided)
+    return contact;
+  contact = {};
   const Reduced ra = reduce(a, 3), rb = reduce(b, 3);
   // All six corners in one plane. A degenerate triangle lies on the hull of its reduced
   // corners, so testing the reduced ones suffices.
@@ -216,7 +242,6 @@ TriangleContact intersect_triangles(const Eigen::Vector3d& a0, const Eigen::Vect
   }
   if (!boxes_overlap(a, 3, b, 3) || !simplices_intersect(a, ra, b, rb)) return contact;
   contact.intersect = true;
-  if (ra.count == 3 && rb.count == 3 && !contact.coplanar && transversal_contact(a, b, contact)) return contact;
   exact_contact(a, ra, b, rb, contact);
   return contact;
 }

@@ -3,7 +3,9 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <span>
 
 #include "reconfig/resolve/intersection_contour.h"
 #include "reconfig/resolve/penetration.h"
@@ -15,12 +17,27 @@ Eigen::Isometry3d placement(const scene::Reconfigurable& scene, int transition, 
   return scene.pose_at(transition, part, t).to_isometry(scene.parts[part].center);
 }
 
-EnergySample sample_at(const scene::Reconfigurable& scene, const PartShape& a, const PartShape& b, int transition,
-                       int part_a, int part_b, double t) {
-  const Eigen::Isometry3d place_a = placement(scene, transition, part_a, t);
-  const Eigen::Isometry3d place_b = placement(scene, transition, part_b, t);
-  const IntersectionContour contour = intersection_contour(a, place_a, b, place_b, ContourPolylines::kNone);
-  const Penetration depth = penetration(a, place_a, b, place_b);
+/// Samples in time order with what each one's penetration term learned (`PenetrationMemo`),
+/// so that samples added between two neighbours start from theirs.
+struct Samples {
+  std::vector<EnergySample> energy;
+  std::vector<PenetrationMemo> memos;
+};
+
+struct PairContext {
+  const scene::Reconfigurable& scene;
+  const PartShape& a;
+  const PartShape& b;
+  const PairEnergyRequest& request;
+};
+
+EnergySample sample_at(const PairContext& ctx, double t, std::span<const PenetrationMemo* const> neighbours,
+                       PenetrationMemo& memo) {
+  const PairEnergyRequest& r = ctx.request;
+  const Eigen::Isometry3d place_a = placement(ctx.scene, r.transition, r.part_a, t);
+  const Eigen::Isometry3d place_b = placement(ctx.scene, r.transition, r.part_b, t);
+  const IntersectionContour contour = intersection_contour(ctx.a, place_a, ctx.b, place_b, ContourPolylines::kNone);
+  const Penetration depth = penetration(ctx.a, place_a, ctx.b, place_b, neighbours, &memo);
   EnergySample sample;
   sample.time = t;
   sample.contour_length = contour.length;
@@ -30,14 +47,39 @@ EnergySample sample_at(const scene::Reconfigurable& scene, const PartShape& a, c
   return sample;
 }
 
-/// Evaluates the samples at `times` in parallel (each is independent; the shapes are built).
-std::vector<EnergySample> evaluate(const scene::Reconfigurable& scene, const PartShape& a, const PartShape& b,
-                                   const PairEnergyRequest& request, const std::vector<double>& times) {
-  std::vector<EnergySample> samples(times.size());
-  tbb::parallel_for(std::size_t{0}, times.size(), [&](std::size_t i) {
-    samples[i] = sample_at(scene, a, b, request.transition, request.part_a, request.part_b, times[i]);
+/// n + 1 uniform samples over [t0, t1], in parallel (each is independent; the shapes are built).
+Samples uniform_samples(const PairContext& ctx, double t0, double t1, int n) {
+  Samples samples;
+  samples.energy.resize(n + 1);
+  samples.memos.resize(n + 1);
+  tbb::parallel_for(0, n + 1, [&](int i) {
+    samples.energy[i] = sample_at(ctx, t0 + (t1 - t0) * i / n, {}, samples.memos[i]);
   });
   return samples;
+}
+
+/// Adds the midpoint of every pair of consecutive samples, in parallel; each starts from its
+/// two neighbours' memos, which only saves work: the result does not depend on them.
+void add_midpoints(const PairContext& ctx, double t0, double t1, Samples& samples) {
+  const int n = static_cast<int>(samples.energy.size()) - 1;
+  Samples added;
+  added.energy.resize(n);
+  added.memos.resize(n);
+  tbb::parallel_for(0, n, [&](int i) {
+    const std::array<const PenetrationMemo*, 2> neighbours = {&samples.memos[i], &samples.memos[i + 1]};
+    added.energy[i] = sample_at(ctx, t0 + (t1 - t0) * (2 * i + 1) / (2.0 * n), neighbours, added.memos[i]);
+  });
+  Samples merged;
+  merged.energy.reserve(2 * n + 1);
+  merged.memos.reserve(2 * n + 1);
+  for (int i = 0; i <= n; ++i) {
+    merged.energy.push_back(samples.energy[i]);
+    merged.memos.push_back(std::move(samples.memos[i]));
+    if (i == n) break;
+    merged.energy.push_back(added.energy[i]);
+    merged.memos.push_back(std::move(added.memos[i]));
+  }
+  samples = std::move(merged);
 }
 
 /// Trapezoid weights of uniformly spaced samples over [t0, t1].
@@ -68,48 +110,41 @@ double severity_time(const std::vector<EnergySample>& samples, double t0, double
 }  // namespace
 
 PairEnergy pair_energy(const scene::Reconfigurable& scene, ShapeCache& shapes, const PairEnergyRequest& request) {
-  const PartShape& a = shapes.shape(scene, request.part_a);
-  const PartShape& b = shapes.shape(scene, request.part_b);
+  const PairContext ctx{scene, shapes.shape(scene, request.part_a), shapes.shape(scene, request.part_b), request};
   const double t0 = request.t0, t1 = std::max(request.t0, request.t1);
-  int n = std::max(1, request.min_intervals);
-  std::vector<double> times(n + 1);
-  for (int i = 0; i <= n; ++i) times[i] = t0 + (t1 - t0) * i / n;
-  std::vector<EnergySample> samples = evaluate(scene, a, b, request, times);
-  set_trapezoid_weights(samples, t0, t1);
-  double energy = integral(samples);
+  const int min_intervals = std::max(1, request.min_intervals);
+  // The first samples in two passes, so that half of them start from their neighbours.
+  int n = min_intervals % 2 == 0 ? min_intervals / 2 : min_intervals;
+  Samples samples = uniform_samples(ctx, t0, t1, n);
+  if (n < min_intervals) {
+    add_midpoints(ctx, t0, t1, samples);
+    n *= 2;
+  }
+  set_trapezoid_weights(samples.energy, t0, t1);
+  double energy = integral(samples.energy);
   // Double the samples until the integral settles: two doublings in a row each change it by
   // less than the accuracy (one may agree by luck while a short collision falls between the
   // samples); an all-zero integral is refined once past the minimum.
   int settled_doublings = 0;
   while (n < request.max_intervals && t1 > t0) {
-    std::vector<double> midpoints(n);
-    for (int i = 0; i < n; ++i) midpoints[i] = t0 + (t1 - t0) * (2 * i + 1) / (2.0 * n);
-    const std::vector<EnergySample> added = evaluate(scene, a, b, request, midpoints);
-    std::vector<EnergySample> merged;
-    merged.reserve(samples.size() + added.size());
-    for (int i = 0; i < n; ++i) {
-      merged.push_back(samples[i]);
-      merged.push_back(added[i]);
-    }
-    merged.push_back(samples.back());
-    samples = std::move(merged);
+    add_midpoints(ctx, t0, t1, samples);
     n *= 2;
-    set_trapezoid_weights(samples, t0, t1);
-    const double refined = integral(samples);
+    set_trapezoid_weights(samples.energy, t0, t1);
+    const double refined = integral(samples.energy);
     const bool settled = refined > 0 ? std::abs(refined - energy) <= request.relative_accuracy * refined
-                                     : n >= 2 * std::max(1, request.min_intervals);
+                                     : n >= 2 * min_intervals;
     energy = refined;
     settled_doublings = settled ? settled_doublings + 1 : 0;
     if (settled_doublings == 2 || (settled && refined == 0)) break;
   }
   PairEnergy result;
   result.energy = energy;
-  for (const EnergySample& s : samples) {
+  for (const EnergySample& s : samples.energy) {
     result.contour_energy += s.weight * s.contour_length;
     result.penetration_energy += s.weight * s.penetration;
   }
-  result.severity_time = severity_time(samples, t0, t1);
-  result.samples = std::move(samples);
+  result.severity_time = severity_time(samples.energy, t0, t1);
+  result.samples = std::move(samples.energy);
   return result;
 }
 

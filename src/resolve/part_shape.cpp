@@ -52,6 +52,8 @@ PartShape::PartShape(const geometry::Mesh& mesh, int max_samples) : distance(mes
     sample_weights.push_back(weight);
   }
   neighbors = face_neighbors(mesh);
+  closed = std::all_of(neighbors.begin(), neighbors.end(),
+                       [](const std::array<int, 3>& across) { return across[0] >= 0 && across[1] >= 0 && across[2] >= 0; });
   const double total = std::accumulate(sample_weights.begin(), sample_weights.end(), 0.0);
   if (total > 0)
     for (double& w : sample_weights) w /= total;

@@ -255,6 +255,34 @@ TEST(TriangleIntersection, MatchesRationalOracleOnPerturbedDoubles) {
   }
 }
 
+TEST(TriangleIntersection, NearMissesInGeneralPositionMatchTheRationalOracle) {
+  // Transversal pairs whose intersection segments end within 1e-16..1e-8 of each other, on
+  // either side: the fast path in doubles must give up rather than guess.
+  std::mt19937 rng(31);
+  std::uniform_real_distribution<double> coord(-1.0, 1.0), along(0.1, 0.9), exponent(-16.0, -8.0);
+  int hits = 0, misses = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    const Tri a{Vector3d(coord(rng), coord(rng), coord(rng)), Vector3d(coord(rng), coord(rng), coord(rng)),
+                Vector3d(coord(rng), coord(rng), coord(rng))};
+    const Vector3d n = (a[1] - a[0]).cross(a[2] - a[0]).normalized();
+    const Vector3d edge = (a[1] - a[0]).normalized();
+    Vector3d outward = n.cross(edge);
+    if (outward.dot(a[2] - a[0]) > 0) outward = -outward;
+    const double gap = (trial % 2 ? 1.0 : -1.0) * std::pow(10.0, exponent(rng));
+    const Vector3d p = a[0] + along(rng) * (a[1] - a[0]) + gap * outward;
+    const Vector3d away = outward + 0.3 * coord(rng) * edge;
+    const Tri b{p + 0.5 * n, p - 0.7 * n, p + 0.2 * coord(rng) * n + away};
+    const bool expected = oracle_intersect(to_exact<CGAL::Gmpq>(a), to_exact<CGAL::Gmpq>(b));
+    ASSERT_EQ(intersect(a, b), expected) << "trial " << trial;
+    const TriangleContact c = contact(a, b);
+    ASSERT_EQ(c.intersect, expected) << "trial " << trial;
+    expect_consistent(a, b, c, oracle_coplanar(to_exact<CGAL::Gmpq>(a), to_exact<CGAL::Gmpq>(b)));
+    (expected ? hits : misses) += 1;
+  }
+  EXPECT_GT(hits, 50);  // both sides of the edge are exercised
+  EXPECT_GT(misses, 50);
+}
+
 TEST(TriangleIntersection, ContactsOfRandomDoubleTriangles) {
   // General position (the fast transversal construction) and thin slivers, at several scales
   // and offsets from the origin.

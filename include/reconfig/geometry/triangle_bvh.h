@@ -56,7 +56,8 @@ class TriangleBvh {
     int begin = 0, end = 0;     ///< leaf: range in order_
   };
   /// The pair traversal of both `for_each_overlapping_pair`s: `other_node_box(node)` and
-  /// `other_triangle_box(g)` give `other`'s boxes in this tree's frame.
+  /// `other_triangle_box(k)` give `other`'s boxes in this tree's frame (k: the position of the
+  /// triangle in `other.order_`).
   template <class OtherNodeBox, class OtherTriangleBox>
   void visit_overlapping_pairs(const TriangleBvh& other, const OtherNodeBox& other_node_box,
                                const OtherTriangleBox& other_triangle_box,
@@ -66,6 +67,7 @@ class TriangleBvh {
   Eigen::MatrixX3i F_;
   std::vector<Node> nodes_;
   std::vector<int> order_;  ///< triangle indices, grouped by leaf
+  std::vector<Eigen::AlignedBox3d> ordered_boxes_;  ///< box of triangle order_[k], by k
 };
 
 }  // namespace reconfig::geometry

@@ -29,6 +29,9 @@ struct PartShape {
   /// neighbors[f][k]: the face across edge k (corners k → k+1) of face f; −1 on a boundary or
   /// a non-manifold edge.
   std::vector<std::array<int, 3>> neighbors;
+  /// Every edge has exactly two faces (no −1 in `neighbors`): the signed distance's sign is
+  /// exact and Lipschitz.
+  bool closed = false;
 
   const geometry::TriangleBvh& tree() const { return distance.tree(); }
 };
