@@ -2,6 +2,7 @@
 // automatic resolution of a transition's collisions (docs/file-formats.md, "reconfig resolve").
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <nlohmann/json.hpp>
 
@@ -26,6 +27,7 @@ struct ResolveOptions {
   std::string output;
   bool json = false;
   bool move_times = false;
+  bool move_states = false;
   int max_rounds = resolve::AutoResolveRequest{}.max_rounds;
 };
 
@@ -90,6 +92,7 @@ int run_auto(const scene::Reconfigurable& scene, int transition, const ResolveOp
   request.detector = collision::with_settings({}, scene.collision);
   request.max_rounds = options.max_rounds;
   request.move_times = options.move_times;
+  request.move_states = options.move_states;
   request.progress = bar.callback();
   request.on_round = [&](const resolve::ResolveRound& round) {
     if (options.json) return;
@@ -98,6 +101,8 @@ int run_auto(const scene::Reconfigurable& scene, int transition, const ResolveOp
                scene.parts[round.pair[0]].name, scene.parts[round.pair[1]].name, round.energy_before,
                round.energy_after, round.steps, round.steps == 1 ? "" : "s",
                round.inserted_keys.empty() ? "" : fmt::format(" (inserted {} key(s))", round.inserted_keys.size()));
+    if (!round.moved_states.empty()) fmt::print("  moved {}\n", fmt::join(round.moved_states, ", "));
+    if (!round.undone_because.empty()) fmt::print("  undone: {}\n", round.undone_because);
   };
   resolve::AutoResolveResult result = resolve::auto_resolve(scene, request);
   bar.finish();
@@ -110,14 +115,22 @@ int run_auto(const scene::Reconfigurable& scene, int transition, const ResolveOp
                         {"energy_before", round.energy_before},
                         {"energy_after", round.energy_after},
                         {"steps", round.steps},
-                        {"inserted_keys", round.inserted_keys}});
+                        {"inserted_keys", round.inserted_keys},
+                        {"moved_states", round.moved_states},
+                        {"undone_because", round.undone_because}});
+    nlohmann::ordered_json rechecked = nlohmann::ordered_json::array();
+    for (const auto& [name, intervals] : result.rechecked)
+      rechecked.push_back({{"transition", name}, {"intervals", intervals}});
     const nlohmann::ordered_json root = {{"transition", options.transition}, {"collision_free", result.collision_free},
                                          {"intervals_left", result.intervals_left},
                                          {"stopped_because", result.stopped_because}, {"rounds", rounds},
-                                         {"output", options.output}};
+                                         {"rechecked", rechecked}, {"output", options.output}};
     fmt::print("{}\n", root.dump(2));
   } else {
     fmt::print("{}: {}; wrote {}\n", options.transition, result.stopped_because, options.output);
+    for (const auto& [name, intervals] : result.rechecked)
+      fmt::print("  {} (through a moved state): {}\n", name,
+                 intervals == 0 ? "collision-free" : fmt::format("{} collision interval(s)", intervals));
   }
   return result.collision_free ? kExitOk : kExitCollisions;
 }
@@ -146,6 +159,11 @@ void add_resolve_command(CLI::App& app, int& exit_code) {
   hint->excludes(automatic);
   command->add_option("-o,--output", options->output, "--auto: where to write the resolved design")->needs(automatic);
   command->add_flag("--move-times", options->move_times, "--auto: the keys' times may move too")->needs(automatic);
+  command
+      ->add_flag("--move-states", options->move_states,
+                 "--auto: the end keys may move too, and with them the states (every transition through a moved "
+                 "state is re-checked; a round that gives one more collisions is undone)")
+      ->needs(automatic);
   command->add_option("--max-rounds", options->max_rounds, "--auto: greedy rounds at most (one pair each)")
       ->check(CLI::Range(1, 1000))
       ->capture_default_str()

@@ -29,12 +29,54 @@ using detail::ObjectiveEnergy;
 using detail::Pair;
 using detail::Window;
 
-std::vector<collision::CollisionInterval> detect(const scene::Reconfigurable& scene, const AutoResolveRequest& request) {
+std::vector<collision::CollisionInterval> detect(const scene::Reconfigurable& scene, const AutoResolveRequest& request,
+                                                 int transition) {
   collision::CollisionRequest detection;
   detection.detector = request.detector;
-  detection.transitions = {request.transition};
+  detection.transitions = {transition};
   const collision::CollisionResult result = collision::detect_collisions(scene, detection);
   return result.transitions.empty() ? std::vector<collision::CollisionInterval>{} : result.transitions[0].intervals;
+}
+
+std::vector<collision::CollisionInterval> detect(const scene::Reconfigurable& scene, const AutoResolveRequest& request) {
+  return detect(scene, request, request.transition);
+}
+
+/// The states in which some part's pose differs between two versions of a design, with
+/// "part in state" for each such part.
+std::map<std::string, std::vector<std::string>> moved_states(const scene::Reconfigurable& before,
+                                                             const scene::Reconfigurable& after) {
+  std::map<std::string, std::vector<std::string>> moved;
+  for (std::size_t s = 0; s < after.states.size(); ++s)
+    for (const scene::Part& part : after.parts) {
+      const motion::Pose a = before.states[s].pose_of(part.name), b = after.states[s].pose_of(part.name);
+      if (a.translation != b.translation || a.rotation.coeffs() != b.rotation.coeffs())
+        moved[after.states[s].name].push_back(fmt::format("{} in {}", part.name, after.states[s].name));
+    }
+  return moved;
+}
+
+/// The transitions other than the one being resolved that pass through a moved state.
+std::vector<int> transitions_through(const scene::Reconfigurable& scene,
+                                     const std::map<std::string, std::vector<std::string>>& states, int except) {
+  std::vector<int> through;
+  for (int t = 0; t < static_cast<int>(scene.transitions.size()); ++t)
+    if (t != except && (states.count(scene.transitions[t].from) || states.count(scene.transitions[t].to)))
+      through.push_back(t);
+  return through;
+}
+
+/// The first transition through a moved state that has more collision intervals after a round
+/// than before it, as a reason to undo the round; empty when there is none.
+std::string worsened_elsewhere(const scene::Reconfigurable& before, const scene::Reconfigurable& after,
+                               const AutoResolveRequest& request) {
+  for (int t : transitions_through(after, moved_states(before, after), request.transition)) {
+    const std::size_t was = detect(before, request, t).size(), now = detect(after, request, t).size();
+    if (now > was)
+      return fmt::format("moving the states would give {} {} collision interval(s) instead of {}",
+                         after.transitions[t].name, now, was);
+  }
+  return "";
 }
 
 /// The pairs of parts that collide in an interval: those of its witness triangle pairs (an
@@ -157,7 +199,8 @@ scene::Reconfigurable descend_with(scene::Reconfigurable scene, ShapeCache& shap
                                    Cancellation& cancel, int& steps) {
   const int tr = request.transition;
   const double clearance = std::max(4 * request.detector.tolerance, 0.01 * size);
-  const DofSelection selection{.handles = true, .end_handles = false, .rotations = true, .times = request.move_times};
+  const DofSelection selection{
+      .handles = true, .end_handles = false, .rotations = true, .times = request.move_times, .end_keys = request.move_states};
   ObjectiveEnergy energy = detail::evaluate(objective, scene, shapes);
   steps = 0;
   for (int step = 0; step < request.max_steps && energy.energy > 0 && !cancel.requested(); ++step) {
@@ -222,6 +265,22 @@ RoundOutcome descend(const scene::Reconfigurable& original, ShapeCache& shapes, 
   return {std::move(*best), round};
 }
 
+/// With states free to move: records which parts moved in which state, and undoes the round
+/// when that gave another transition through those states more collision intervals.
+void undo_if_worse_elsewhere(const scene::Reconfigurable& before, const AutoResolveRequest& request,
+                             RoundOutcome& outcome) {
+  for (auto& [state, parts] : moved_states(before, outcome.scene))
+    for (std::string& part : parts) outcome.round.moved_states.push_back(std::move(part));
+  if (outcome.round.moved_states.empty()) return;
+  outcome.round.undone_because = worsened_elsewhere(before, outcome.scene, request);
+  if (outcome.round.undone_because.empty()) return;
+  outcome.scene = before;
+  outcome.round.energy_after = outcome.round.energy_before;
+  outcome.round.inserted_keys.clear();
+  outcome.round.moved_states.clear();
+  outcome.round.steps = 0;
+}
+
 }  // namespace
 
 AutoResolveResult auto_resolve(const scene::Reconfigurable& input, const AutoResolveRequest& request) {
@@ -267,6 +326,7 @@ AutoResolveResult auto_resolve(const scene::Reconfigurable& input, const AutoRes
       result.stopped_because = "cancelled";
       break;
     }
+    if (request.move_states) undo_if_worse_elsewhere(result.scene, request, outcome);
     result.scene = std::move(outcome.scene);
     if (!(outcome.round.energy_after < outcome.round.energy_before)) stuck.insert(chosen);
     else stuck.clear();  // the design changed: other pairs may move again
@@ -280,6 +340,8 @@ AutoResolveResult auto_resolve(const scene::Reconfigurable& input, const AutoRes
     result.stopped_because = result.collision_free ? "the transition is collision-free"
                                                    : fmt::format("stopped after {} rounds", request.max_rounds);
   }
+  for (int t : transitions_through(result.scene, moved_states(input, result.scene), request.transition))
+    result.rechecked.emplace_back(result.scene.transitions[t].name, static_cast<int>(detect(result.scene, request, t).size()));
   return result;
 }
 

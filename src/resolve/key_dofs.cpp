@@ -56,7 +56,7 @@ void add_translation_dofs(const std::vector<motion::TranslationKey>& keys, const
   const int m = static_cast<int>(keys.size());
   for (int j = 0; j < m; ++j) {
     const bool inner = j > 0 && j + 1 < m;
-    if (inner) dofs.push_back({DofKind::kTranslation, scene::KeyKind::kTranslation, j});
+    if (inner || (selection.end_keys && m > 1)) dofs.push_back({DofKind::kTranslation, scene::KeyKind::kTranslation, j});
     const bool handles = selection.handles && (inner || selection.end_handles);
     if (handles && m > 1 && j > 0) dofs.push_back({DofKind::kHandleIn, scene::KeyKind::kTranslation, j});
     if (handles && m > 1 && j + 1 < m) dofs.push_back({DofKind::kHandleOut, scene::KeyKind::kTranslation, j});
@@ -67,9 +67,11 @@ void add_translation_dofs(const std::vector<motion::TranslationKey>& keys, const
 void add_rotation_dofs(const std::vector<motion::RotationKey>& keys, const DofSelection& selection,
                        std::vector<KeyDof>& dofs) {
   const int m = static_cast<int>(keys.size());
-  for (int j = 1; j + 1 < m; ++j) {
-    if (selection.rotations) dofs.push_back({DofKind::kRotation, scene::KeyKind::kRotation, j});
-    if (selection.times) dofs.push_back({DofKind::kTime, scene::KeyKind::kRotation, j});
+  for (int j = 0; j < m && m > 1; ++j) {
+    const bool inner = j > 0 && j + 1 < m;
+    if (selection.rotations && (inner || selection.end_keys))
+      dofs.push_back({DofKind::kRotation, scene::KeyKind::kRotation, j});
+    if (selection.times && inner) dofs.push_back({DofKind::kTime, scene::KeyKind::kRotation, j});
   }
 }
 
@@ -138,12 +140,49 @@ Twists twist_jacobian(const scene::Reconfigurable& scene, int transition, int pa
   return J;
 }
 
+namespace {
+
+/// How a step moves the part's pose in the transition's first (0) and last (1) state.
+struct StateMoves {
+  std::array<Eigen::Vector3d, 2> translation = {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
+  std::array<Eigen::Quaterniond, 2> rotation = {Eigen::Quaterniond::Identity(), Eigen::Quaterniond::Identity()};
+  std::array<bool, 2> moved = {false, false};
+};
+
+/// Moves the part in the states whose end keys the step moved; every transition through them
+/// follows (this one's end keys too).
+void move_states(scene::Reconfigurable& scene, int transition, int part, const StateMoves& moves) {
+  const scene::Transition& t = scene.transitions[transition];
+  const std::string& name = scene.parts[part].name;
+  for (int end = 0; end < 2; ++end) {
+    if (!moves.moved[end]) continue;
+    const std::string state = end == 0 ? t.from : t.to;
+    motion::Pose pose = scene.states[scene.find_state(state)].pose_of(name);
+    pose.translation += moves.translation[end];
+    pose.rotation = (moves.rotation[end] * pose.rotation).normalized();
+    scene::set_state_pose(state, name, pose)->apply(scene);
+  }
+}
+
+}  // namespace
+
 void displace_keys(scene::Reconfigurable& scene, int transition, int part, const std::vector<KeyDof>& dofs,
                    const Eigen::VectorXd& step) {
   scene::KeyframedTrack& track = keyframed_track(scene, transition, part);
+  StateMoves states;
   int column = 0;
   for (const KeyDof& dof : dofs) {
     const Eigen::Vector3d d = dof.size() == 3 ? Eigen::Vector3d(step.segment<3>(column)) : Eigen::Vector3d::Zero();
+    const int keys = static_cast<int>(dof.track == scene::KeyKind::kTranslation ? track.translation.size()
+                                                                                 : track.rotation.size());
+    const int end = dof.key == 0 ? 0 : (dof.key + 1 == keys ? 1 : -1);
+    if (end >= 0 && (dof.kind == DofKind::kTranslation || dof.kind == DofKind::kRotation)) {
+      states.moved[end] = true;
+      if (dof.kind == DofKind::kTranslation) states.translation[end] += d;
+      else if (d.norm() > 0) states.rotation[end] = Eigen::Quaterniond(Eigen::AngleAxisd(d.norm(), d.normalized())) * states.rotation[end];
+      column += dof.size();
+      continue;
+    }
     const std::string where =
         fmt::format("transitions[{}].tracks.{}.{}[{}]", transition, scene.parts[part].name,
                     dof.track == scene::KeyKind::kTranslation ? "translation" : "rotation", dof.key);
@@ -167,6 +206,7 @@ void displace_keys(scene::Reconfigurable& scene, int transition, int part, const
     }
     column += dof.size();
   }
+  move_states(scene, transition, part, states);
 }
 
 std::string dof_kind_name(DofKind kind) {

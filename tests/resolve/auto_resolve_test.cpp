@@ -2,12 +2,15 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <variant>
 #include <cstdio>
 #include <random>
 #include <string>
 
 #include "reconfig/collision/detect_collisions.h"
 #include "reconfig/collision/reference_check.h"
+#include "reconfig/geometry/primitives.h"
 #include "reconfig/scene/scene_file.h"
 #include "resolve_scenes.h"
 #include "support/test_data.h"
@@ -84,6 +87,49 @@ TEST(AutoResolve, TheHastyKitchenIsResolvedByRetimingItsPullouts) {
   const AutoResolveResult result = auto_resolve(scene, {.transition = hasty, .move_times = true});
   EXPECT_TRUE(result.collision_free) << result.stopped_because;
   EXPECT_FALSE(reference_collides(result.scene, hasty));
+}
+
+/// A box sliding along x that ends half inside a still box (the end state itself collides),
+/// and a transition "back" from that state to the start.
+scene::Reconfigurable end_state_inside_scene() {
+  scene::Reconfigurable scene = testing::two_part_scene(geometry::make_box({1, 1, 1}), geometry::make_box({0.5, 0.5, 0.5}),
+                                                        {{-3, 0, 0}, {-1.5, 0, 0}, {-0.6, 0, 0}});
+  scene::Transition back = scene.transitions[0];
+  back.name = "back";
+  std::swap(back.from, back.to);
+  auto& keyed = std::get<scene::KeyframedTrack>(back.tracks.at("mover"));
+  std::reverse(keyed.translation.begin(), keyed.translation.end());
+  for (auto& key : keyed.translation) {
+    key.time = 1 - key.time;
+    std::swap(key.in, key.out);
+  }
+  scene.transitions.push_back(back);
+  return scene;
+}
+
+TEST(AutoResolve, AStateThatCollidesIsMovedOnlyWhenStatesMayMove) {
+  const scene::Reconfigurable scene = end_state_inside_scene();
+  ASSERT_TRUE(collides(scene, 0));
+  ASSERT_TRUE(collides(scene, 1));  // the same state, where "back" starts
+  const AutoResolveResult fixed = auto_resolve(scene, {.max_rounds = 4});
+  EXPECT_FALSE(fixed.collision_free);  // the collision at t = 1 is the state's own
+  const AutoResolveResult freed = auto_resolve(scene, {.max_rounds = 8, .move_states = true});
+  ASSERT_TRUE(freed.collision_free) << freed.stopped_because;
+  EXPECT_FALSE(reference_collides(freed.scene, 0));
+  // The part moved in "end", and "back" starts there: it was re-checked, and is free too.
+  bool moved = false;
+  for (const ResolveRound& round : freed.rounds)
+    for (const std::string& what : round.moved_states) moved |= what == "mover in end";
+  EXPECT_TRUE(moved);
+  ASSERT_EQ(freed.rechecked.size(), 1u);
+  EXPECT_EQ(freed.rechecked[0].first, "back");
+  EXPECT_EQ(freed.rechecked[0].second, 0);
+  EXPECT_FALSE(collides(freed.scene, 1));
+  const motion::Pose end = freed.scene.states[freed.scene.find_state("end")].pose_of("mover");
+  EXPECT_LT((freed.scene.pose_at(1, 1, 0.0).translation - end.translation).norm(), 1e-12);
+  EXPECT_LT((freed.scene.pose_at(0, 1, 1.0).translation - end.translation).norm(), 1e-12);
+  // The start state stays where it was: it did not collide.
+  EXPECT_EQ(freed.scene.states[freed.scene.find_state("start")].pose_of("mover").translation, Eigen::Vector3d(-3, 0, 0));
 }
 
 TEST(AutoResolve, CancellingStops) {

@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
+#include <variant>
 
 #include "reconfig/common/input_error.h"
 #include "reconfig/scene/edits.h"
@@ -79,6 +81,72 @@ TEST(KeyDofs, TwistJacobianMatchesFiniteDifferencesOfEveryKind) {
         EXPECT_LT((analytic - fd).norm(), 1e-5 * (1 + fd.norm())) << "seed " << seed << " t " << t << " coordinate " << k;
       }
     }
+  }
+}
+
+TEST(KeyDofs, EndKeysAreListedOnlyWhenAsked) {
+  const scene::Reconfigurable scene = scene_with_inner_keys(3);
+  int ends = 0;
+  for (const KeyDof& dof : key_dofs(scene, 0, 0, {.end_keys = true})) {
+    const bool end = dof.key == 0 || (dof.track == scene::KeyKind::kTranslation ? dof.key == 3 : dof.key == 2);
+    if (end && (dof.kind == DofKind::kTranslation || dof.kind == DofKind::kRotation)) ++ends;
+    if (end) {
+      EXPECT_NE(dof.kind, DofKind::kTime);  // the ends stay at t = 0 and 1
+    }
+  }
+  EXPECT_EQ(ends, 4);  // two translation keys, two rotation keys
+}
+
+TEST(KeyDofs, EndKeysMoveTheStatesAndEveryTransitionThroughThem) {
+  for (std::uint32_t seed = 4; seed <= 8; ++seed) {
+    scene::Reconfigurable scene = scene_with_inner_keys(seed);
+    // A second transition back from "end" to "start".
+    scene::Transition back = scene.transitions[0];
+    back.name = "back";
+    std::swap(back.from, back.to);
+    for (auto& [name, track] : back.tracks) {
+      auto& keyed = std::get<scene::KeyframedTrack>(track);
+      std::reverse(keyed.translation.begin(), keyed.translation.end());
+      for (auto& key : keyed.translation) {
+        key.time = 1 - key.time;
+        std::swap(key.in, key.out);
+      }
+      std::reverse(keyed.rotation.begin(), keyed.rotation.end());
+      for (auto& key : keyed.rotation) key.time = 1 - key.time;
+    }
+    scene.transitions.push_back(back);
+    const std::vector<KeyDof> dofs = key_dofs(scene, 0, 0, {.end_keys = true});
+    const int n = dof_coordinates(dofs);
+    const scene::Part& part = scene.parts[0];
+    const Eigen::Vector3d p = part.mesh.V.row(0).transpose();
+    // The Jacobian of the end keys matches finite differences, at the ends too.
+    for (double t : {0.0, 0.04, 0.5, 0.97, 1.0}) {
+      const auto J = twist_jacobian(scene, 0, 0, dofs, t);
+      const Eigen::Vector3d y = scene.pose_at(0, 0, t).apply(part.center, p);
+      for (int k = 0; k < n; ++k) {
+        const auto displaced = [&](double s) {
+          scene::Reconfigurable moved = scene;
+          Eigen::VectorXd step = Eigen::VectorXd::Zero(n);
+          step[k] = s;
+          displace_keys(moved, 0, 0, dofs, step);
+          return moved.pose_at(0, 0, t).apply(part.center, p);
+        };
+        const Eigen::Vector3d fd = (displaced(1e-6) - displaced(-1e-6)) / 2e-6;
+        EXPECT_LT((point_velocity(J.col(k), y) - fd).norm(), 1e-5 * (1 + fd.norm())) << seed << " " << t << " " << k;
+      }
+    }
+    // A step on every coordinate: the states hold the new end poses, and "back" starts and
+    // ends where "move" ends and starts.
+    scene::Reconfigurable moved = scene;
+    displace_keys(moved, 0, 0, dofs, Eigen::VectorXd::Constant(n, 0.05));
+    const motion::Pose start = moved.pose_at(0, 0, 0.0), end = moved.pose_at(0, 0, 1.0);
+    EXPECT_GT((start.translation - scene.pose_at(0, 0, 0.0).translation).norm(), 0.01);
+    const motion::Pose in_start = moved.states[moved.find_state("start")].pose_of(part.name);
+    EXPECT_LT((in_start.translation - start.translation).norm(), 1e-12);
+    EXPECT_LT(in_start.rotation.angularDistance(start.rotation), 1e-9);
+    EXPECT_LT((moved.pose_at(1, 0, 1.0).translation - start.translation).norm(), 1e-12);
+    EXPECT_LT((moved.pose_at(1, 0, 0.0).translation - end.translation).norm(), 1e-12);
+    EXPECT_LT(moved.pose_at(1, 0, 0.0).rotation.angularDistance(end.rotation), 1e-9);
   }
 }
 

@@ -38,13 +38,17 @@ struct DofSelection {
   bool end_handles = true;
   bool rotations = true;
   bool times = true;
+  /// The first and last keys' points and rotations: the part's poses in the transition's
+  /// states. Moving one moves the part in that state, so every transition through the state
+  /// changes (`displace_keys`). Their times never move.
+  bool end_keys = false;
 };
 
 /// The degrees of freedom of part `part` in transition `transition`, in key order: the points,
 /// rotations and times of inner keys, and the handles that shape the motion (the out handle of
 /// the first translation key and the in handle of the last included: how the part leaves and
-/// reaches its states). The end keys' points and rotations are the states' poses and are not
-/// listed. A part without a keyframed track (still, screw poses, or driven by a linkage) has
+/// reaches its states). The end keys' points and rotations are the states' poses and are
+/// listed only with `selection.end_keys`. A part without a keyframed track (still, screw poses, or driven by a linkage) has
 /// none.
 std::vector<KeyDof> key_dofs(const scene::Reconfigurable& scene, int transition, int part,
                              const DofSelection& selection = {});
@@ -59,7 +63,9 @@ Eigen::Matrix<double, 6, Eigen::Dynamic> twist_jacobian(const scene::Reconfigura
                                                         const std::vector<KeyDof>& dofs, double t);
 
 /// Moves the keys of `dofs` by `step` (dof_coordinates(dofs) numbers, in their order): points
-/// with their handles, handles, rotations by exp(δ) in the world frame, times.
+/// with their handles, handles, rotations by exp(δ) in the world frame, times. An end key's
+/// point or rotation moves the part's pose in that state (`scene::set_state_pose`): the end
+/// keys of every transition through the state follow, this one's included.
 /// @throws InputError if a time step would put keys out of order
 void displace_keys(scene::Reconfigurable& scene, int transition, int part, const std::vector<KeyDof>& dofs,
                    const Eigen::VectorXd& step);
