@@ -31,12 +31,10 @@ SubstepPoint substep_at(const detail::HalfStep& forward, const detail::HalfStep&
   Eigen::Vector3d middle;
   Eigen::Matrix3d J1, J2;
   const bool moved_forward = forward.apply(p, middle, J1);
-  out.solved = backward.solve(middle, out.position);
+  out.solved = backward.solve(middle, out.position, J2);
   if (!out.solved) return out;
-  Eigen::Vector3d check;
-  const bool moved_backward = backward.apply(out.position, check, J2);
   if (normal) out.normal = *normal;
-  if (!moved_forward && !moved_backward) return out;  // bit for bit: this point is out of reach
+  if (!moved_forward && out.position == middle) return out;  // bit for bit: this point is out of reach
   const double det1 = J1.determinant(), det2 = J2.determinant();
   out.determinant = det2 > 0 ? det1 / det2 : -std::abs(det1 * det2) - 1e-300;
   if (normal && det1 > 0 && det2 > 0) {  // cof(J) n ∝ J⁻ᵀ n with J = J2⁻¹ J1
@@ -101,9 +99,36 @@ std::string check_grid(const detail::HalfStep& forward, const detail::HalfStep& 
   return {};
 }
 
+/// What a stroke changed so far, to put back if a later sub-step refuses it.
+struct UndoLog {
+  std::vector<char> touched;  ///< per point
+  std::vector<int> rows;
+  std::vector<Eigen::RowVector3d> positions, normals;
+
+  void record(int i, const Eigen::MatrixX3d& V, const Eigen::MatrixX3d& N) {
+    if (touched[i]) return;
+    touched[i] = 1;
+    rows.push_back(i);
+    positions.push_back(V.row(i));
+    if (N.rows() == V.rows()) normals.push_back(N.row(i));
+  }
+  void restore(Eigen::MatrixX3d& V, Eigen::MatrixX3d& N) const {
+    for (std::size_t k = 0; k < rows.size(); ++k) {
+      V.row(rows[k]) = positions[k];
+      if (N.rows() == V.rows()) N.row(rows[k]) = normals[k];
+    }
+  }
+  int moved(const Eigen::MatrixX3d& V) const {
+    int count = 0;
+    for (std::size_t k = 0; k < rows.size(); ++k) count += V.row(rows[k]) != positions[k];
+    return count;
+  }
+};
+
 /// Applies sub-step k to the points in reach; the message of the first failure, or empty.
 std::string substep_points(const detail::HalfStep& forward, const detail::HalfStep& backward,
-                           const Eigen::AlignedBox3d& reach, Eigen::MatrixX3d& V, Eigen::MatrixX3d& N, double& least) {
+                           const Eigen::AlignedBox3d& reach, Eigen::MatrixX3d& V, Eigen::MatrixX3d& N, double& least,
+                           UndoLog& undo) {
   std::vector<int> in_reach;
   for (int i = 0; i < V.rows(); ++i)
     if (reach.contains(V.row(i).transpose())) in_reach.push_back(i);
@@ -126,6 +151,7 @@ std::string substep_points(const detail::HalfStep& forward, const detail::HalfSt
     if (!(out[k].determinant > 0)) return fmt::format("Jacobian determinant {:.3g} at vertex {}", out[k].determinant, i);
   }
   for (int k = 0; k < n; ++k) {
+    undo.record(in_reach[k], V, N);
     V.row(in_reach[k]) = out[k].position.transpose();
     if (normals) N.row(in_reach[k]) = out[k].normal.transpose();
   }
@@ -140,7 +166,8 @@ StrokeResult deform_points(const std::vector<MovingTool>& tools, const StrokeOpt
   assert(N.rows() == 0 || N.rows() == V.rows());
   StrokeResult result;
   result.substeps = count_substeps(tools, options, result.foldover_bound);
-  Eigen::MatrixX3d moved = V, normals = N;
+  UndoLog undo;
+  undo.touched.assign(V.rows(), 0);
   const double h = 1.0 / result.substeps;
   Placement start = place(tools, options.mirror, 0.0);
   for (int k = 0; k < result.substeps; ++k) {
@@ -150,17 +177,15 @@ StrokeResult deform_points(const std::vector<MovingTool>& tools, const StrokeOpt
     Eigen::AlignedBox3d reach = start.reach;
     reach.extend(end.reach);
     std::string failure = check_grid(*forward, *backward, reach, options.grid, result.min_jacobian_determinant);
-    if (failure.empty())
-      failure = substep_points(*forward, *backward, reach, moved, normals, result.min_jacobian_determinant);
+    if (failure.empty()) failure = substep_points(*forward, *backward, reach, V, N, result.min_jacobian_determinant, undo);
     if (!failure.empty()) {
+      undo.restore(V, N);
       result.refusal = fmt::format("the stroke folds space over at sub-step {} of {}: {}", k + 1, result.substeps, failure);
       return result;
     }
     start = end;
   }
-  for (int i = 0; i < V.rows(); ++i) result.vertices_moved += moved.row(i) != V.row(i);
-  V = std::move(moved);
-  N = std::move(normals);
+  result.vertices_moved = undo.moved(V);
   result.tools = std::move(start.tools);
   result.applied = true;
   return result;

@@ -107,6 +107,11 @@ double Tool::distance(const Eigen::Vector3d& p) const {
 }
 
 double Tool::distance(const Eigen::Vector3d& p, Eigen::Vector3d& gradient) const {
+  if (shape_ == ToolShape::kSphere) {  // the common tool, without turning p into the tool's frame
+    const double d = sphere_distance(p - pose_.translation, pose_.scale * size_.x(), &gradient);
+    if (d <= 0) gradient.setZero();
+    return d;
+  }
   Eigen::Vector3d local_gradient;
   const double d = pose_.scale * local_distance(pose_.to_tool(p), &local_gradient);
   gradient = d > 0 ? Eigen::Vector3d(pose_.rotation * local_gradient) : Eigen::Vector3d::Zero();

@@ -37,20 +37,28 @@ bool ClosedFormHalfStep::apply(const Eigen::Vector3d& p, Eigen::Vector3d& image,
   return true;
 }
 
-// G(p) = p − (−c φ(p)) ⊙ M y = 0, ∂G/∂p = I + u ∇φᵀ with u = c (log M)((−cφ) ⊙ M y).
-bool ClosedFormHalfStep::solve(const Eigen::Vector3d& y, Eigen::Vector3d& p) const {
+// G(p) = p − (−c φ(p)) ⊙ M y = 0, ∂G/∂p = I + u ∇φᵀ with u = c (log M)((−cφ) ⊙ M y). The
+// Jacobian of E at the solution comes from the last iterate's field (it moved by < tolerance).
+bool ClosedFormHalfStep::solve(const Eigen::Vector3d& y, Eigen::Vector3d& p, Eigen::Matrix3d& J) const {
   p = y;
   Eigen::Vector3d gradient;
-  if (tool_.field(y, gradient) == 0) return true;
   for (int iteration = 0; iteration < kMaxNewtonIterations; ++iteration) {
-    const double alpha = -c_ * tool_.field(p, gradient);
+    const double w = tool_.field(p, gradient);
+    if (iteration == 0 && w == 0) {  // out of reach: E(y) = y
+      J.setIdentity();
+      return true;
+    }
+    const double alpha = -c_ * w;
     const Eigen::Vector3d residual = p - motion_.apply(y, alpha);
     const Eigen::Vector3d u = c_ * motion_.velocity(y, alpha);
     const double denominator = 1 + gradient.dot(u);
     if (!(denominator > 0)) return false;
     const Eigen::Vector3d step = residual - u * (gradient.dot(residual) / denominator);
     p -= step;
-    if (close_enough(step, p)) return true;
+    if (close_enough(step, p)) {
+      J = motion_.linear(c_ * w) + c_ * motion_.velocity(p, c_ * w) * gradient.transpose();
+      return true;
+    }
   }
   return false;
 }
@@ -109,15 +117,22 @@ bool BlendedHalfStep::apply(const Eigen::Vector3d& p, Eigen::Vector3d& image, Ei
   return true;
 }
 
-bool BlendedHalfStep::solve(const Eigen::Vector3d& y, Eigen::Vector3d& p) const {
+bool BlendedHalfStep::solve(const Eigen::Vector3d& y, Eigen::Vector3d& p, Eigen::Matrix3d& J) const {
   p = y;
   Eigen::Matrix4d log;
-  if (!blended_log(y, log)) return true;
+  if (!blended_log(y, log)) {
+    J.setIdentity();
+    return true;
+  }
   for (int iteration = 0; iteration < kMaxFixedPointIterations; ++iteration) {
     const Eigen::Vector3d next = map(y, p, -c_);
     const Eigen::Vector3d step = next - p;
     p = next;
-    if (close_enough(step, p)) return true;
+    if (close_enough(step, p)) {
+      Eigen::Vector3d image;
+      apply(p, image, J);
+      return true;
+    }
   }
   return false;
 }

@@ -21,9 +21,9 @@ class HalfStep {
   virtual ~HalfStep() = default;
   /// E(p) in `image` and ∂E/∂p in `J`; false (image = p, J = I exactly) where no tool reaches p.
   virtual bool apply(const Eigen::Vector3d& p, Eigen::Vector3d& image, Eigen::Matrix3d& J) const = 0;
-  /// The point p with E(p) = y, in `p`; false if it could not be found (E not invertible there).
-  /// Where no tool reaches y, p = y exactly.
-  virtual bool solve(const Eigen::Vector3d& y, Eigen::Vector3d& p) const = 0;
+  /// The point p with E(p) = y, in `p`, and ∂E/∂p there in `J`; false if it could not be found
+  /// (E not invertible there). Where no tool reaches y, p = y and J = I exactly.
+  virtual bool solve(const Eigen::Vector3d& y, Eigen::Vector3d& p, Eigen::Matrix3d& J) const = 0;
 };
 
 /// One tool, closed forms (§4.1–4.3): E(p) = (c φ(p)) ⊙ M p, J = A(α) + c (log M E(p)) ∇φᵀ,
@@ -33,7 +33,7 @@ class ClosedFormHalfStep final : public HalfStep {
   /// @param tool  placed where it is at this instant (kept by reference)
   ClosedFormHalfStep(const Tool& tool, const ToolMotion& motion, double c) : tool_(tool), motion_(motion), c_(c) {}
   bool apply(const Eigen::Vector3d& p, Eigen::Vector3d& image, Eigen::Matrix3d& J) const override;
-  bool solve(const Eigen::Vector3d& y, Eigen::Vector3d& p) const override;
+  bool solve(const Eigen::Vector3d& y, Eigen::Vector3d& p, Eigen::Matrix3d& J) const override;
 
  private:
   const Tool& tool_;
@@ -51,7 +51,7 @@ class BlendedHalfStep final : public HalfStep {
   BlendedHalfStep(const std::vector<Tool>& tools, const std::vector<ToolMotion>& motions, const MirrorPlane& mirror,
                   double c);
   bool apply(const Eigen::Vector3d& p, Eigen::Vector3d& image, Eigen::Matrix3d& J) const override;
-  bool solve(const Eigen::Vector3d& y, Eigen::Vector3d& p) const override;
+  bool solve(const Eigen::Vector3d& y, Eigen::Vector3d& p, Eigen::Matrix3d& J) const override;
 
  private:
   struct Term {
