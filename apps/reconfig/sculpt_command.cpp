@@ -27,6 +27,7 @@ struct SculptOptions {
   std::vector<std::string> translate, scale, rotate;
   std::string mirror;
   int substeps = 0;
+  double remesh = 0;
   std::string output;
   bool json = false;
 };
@@ -150,6 +151,7 @@ int run_sculpt(const SculptOptions& options, const std::vector<StrokeArgument>& 
   sculpt::StrokeOptions stroke_options;
   stroke_options.mirror = mirror_plane(options.mirror);
   stroke_options.substeps = options.substeps;
+  stroke_options.remesh = {options.remesh, options.remesh / 4};
   nlohmann::ordered_json report = nlohmann::ordered_json::array();
   Eigen::MatrixX3d no_normals(0, 3);
   for (std::size_t i = 0; i < strokes.size(); ++i) {
@@ -163,6 +165,8 @@ int run_sculpt(const SculptOptions& options, const std::vector<StrokeArgument>& 
                       {"foldover_bound", result.foldover_bound},
                       {"min_jacobian_determinant", result.min_jacobian_determinant},
                       {"vertices_moved", result.vertices_moved},
+                      {"splits", result.splits},
+                      {"collapses", result.collapses},
                       {"seconds", seconds}});
     if (!result.applied) {
       report.back()["refusal"] = result.refusal;
@@ -206,6 +210,9 @@ void add_sculpt_command(CLI::App& app, int& exit_code) {
       ->allow_extra_args(false);
   command->add_option("--mirror", options->mirror, "x, y or z: the tool also acts mirrored in that coordinate plane");
   command->add_option("--substeps", options->substeps, "Force this many sub-steps per stroke (default: from the foldover bound)")
+      ->check(CLI::PositiveNumber);
+  command->add_option("--remesh", options->remesh,
+                      "L: between sub-steps, split edges longer than L and collapse those shorter than L/4 in the tool's reach")
       ->check(CLI::PositiveNumber);
   command->add_option("-o,--output", options->output, "Output mesh (.obj)")->required();
   command->add_flag("--json", options->json, "Print the report as JSON");

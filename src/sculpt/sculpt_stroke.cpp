@@ -191,24 +191,59 @@ StrokeResult deform_points(const std::vector<MovingTool>& tools, const StrokeOpt
   return result;
 }
 
+namespace {
+
+/// The stroke one sub-step at a time, the mesh remeshed in each sub-step's reach after it.
+StrokeResult deform_and_remesh(const std::vector<MovingTool>& tools, const StrokeOptions& options, geometry::Mesh& mesh,
+                               Eigen::MatrixX3d& N) {
+  StrokeResult result;
+  result.substeps = count_substeps(tools, options, result.foldover_bound);
+  StrokeOptions one = options;
+  one.substeps = 1;
+  std::vector<MovingTool> step = tools;
+  for (std::size_t j = 0; j < tools.size(); ++j) step[j].motion = tools[j].motion.fraction(1.0 / result.substeps);
+  for (int k = 0; k < result.substeps; ++k) {
+    const StrokeResult sub = deform_points(step, one, mesh.V, N);
+    result.min_jacobian_determinant = std::min(result.min_jacobian_determinant, sub.min_jacobian_determinant);
+    if (!sub.applied) {
+      result.refusal = fmt::format("the stroke folds space over at sub-step {} of {}: {}", k + 1, result.substeps,
+                                   sub.refusal.substr(sub.refusal.find(": ") + 2));
+      return result;
+    }
+    result.vertices_moved += sub.vertices_moved;
+    Eigen::AlignedBox3d reach = place(step, options.mirror, 0.0).reach;
+    for (std::size_t j = 0; j < step.size(); ++j) step[j].tool = sub.tools[j];
+    reach.extend(place(step, options.mirror, 0.0).reach);
+    const RemeshResult remeshed = remesh_in_box(reach, options.remesh, mesh, N);
+    result.splits += remeshed.splits;
+    result.collapses += remeshed.collapses;
+  }
+  for (const MovingTool& m : step) result.tools.push_back(m.tool);
+  result.applied = true;
+  return result;
+}
+
+}  // namespace
+
 StrokeResult sculpt_mesh(const std::vector<MovingTool>& tools, const StrokeOptions& options, geometry::Mesh& mesh,
                          Eigen::MatrixX3d& N) {
   geometry::Mesh deformed = mesh;
   Eigen::MatrixX3d normals = N;
-  StrokeResult result = deform_points(tools, options, deformed.V, normals);
-  if (!result.applied || !options.check_self_intersections || result.vertices_moved == 0) {
-    if (result.applied) mesh = std::move(deformed), N = std::move(normals);
-    return result;
+  StrokeResult result = options.remesh.max_edge > 0 ? deform_and_remesh(tools, options, deformed, normals)
+                                                    : deform_points(tools, options, deformed.V, normals);
+  const bool changed = result.vertices_moved > 0 || result.splits > 0 || result.collapses > 0;
+  if (result.applied && options.check_self_intersections && changed) {
+    const geometry::SelfIntersections after = geometry::find_self_intersections(deformed, 1);
+    if (!after.pairs.empty() && !geometry::find_self_intersections(mesh, 0).truncated) {
+      result.applied = false;
+      result.refusal = fmt::format("the stroke makes the mesh self-intersect (faces {} and {})", after.pairs[0].first,
+                                   after.pairs[0].second);
+    }
   }
-  const geometry::SelfIntersections after = geometry::find_self_intersections(deformed, 1);
-  if (!after.pairs.empty() && geometry::find_self_intersections(mesh, 0).truncated == false) {
-    result.applied = false;
-    result.refusal = fmt::format("the stroke makes the mesh self-intersect (faces {} and {})", after.pairs[0].first,
-                                 after.pairs[0].second);
-    return result;
+  if (result.applied) {
+    mesh = std::move(deformed);
+    N = std::move(normals);
   }
-  mesh = std::move(deformed);
-  N = std::move(normals);
   return result;
 }
 

@@ -26,6 +26,14 @@ ToolMotion ToolMotion::rotation(const Eigen::Vector3d& axis, double radians, con
   return {Kind::kRotation, axis.normalized(), center, radians};
 }
 
+ToolMotion ToolMotion::fraction(double alpha) const {
+  ToolMotion m = *this;
+  if (kind == Kind::kTranslation) m.vector = alpha * vector;
+  if (kind == Kind::kScale) m.amount = std::pow(amount, alpha);
+  if (kind == Kind::kRotation) m.amount = alpha * amount;
+  return m;
+}
+
 ToolMotion ToolMotion::inverse() const {
   ToolMotion m = *this;
   if (kind == Kind::kTranslation) m.vector = -vector;

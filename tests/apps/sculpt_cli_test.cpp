@@ -84,6 +84,16 @@ TEST(SculptCli, StrokesApplyInOrderAndAStrokeThenItsInverseGivesTheMeshBack) {
   EXPECT_GT(strokes[0]["vertices_moved"].get<int>(), 10);
 }
 
+TEST(SculptCli, RemeshingKeepsAPulledFeatureResolved) {
+  const auto out = testing::fresh_temp_dir() / "pulled.obj";
+  const auto run = run_reconfig("sculpt " + example("meshes/armrest.obj") + " --tool sphere:0.01 --at 0,0.19,0 --coating 0.02"
+                                " --translate 0,0.1,0 --remesh 0.006 -o " + out.string() + " --json");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const nlohmann::json report = nlohmann::json::parse(run.out);
+  EXPECT_GT(report["triangles_after"].get<int>(), report["triangles_before"].get<int>());
+  EXPECT_GT(report["strokes"][0]["splits"].get<int>(), 20);
+}
+
 TEST(SculptCli, ARefusedStrokeExitsTwoAndWritesNothing) {
   const auto out = testing::fresh_temp_dir() / "never.obj";
   const auto run = run_reconfig("sculpt " + example("meshes/armrest.obj") + kArmrestStroke + " --substeps 1 -o " + out.string());

@@ -149,6 +149,32 @@ TEST(SculptStroke, RandomModerateStrokesKeepTheMeshFreeOfSelfIntersections) {
   EXPECT_TRUE(geometry::find_self_intersections(mesh, 1).pairs.empty());
 }
 
+TEST(SculptStroke, LongPullsAndFullTwistsWithRemeshingKeepTheMeshFreeOfSelfIntersections) {
+  // Translations up to 10× the tool's size, scalings, and full turns of the tool about its own
+  // center, the mesh remeshed between sub-steps (§5.1). (Full turns about a pivot outside the
+  // tool can wind the coating tighter than the mesh resolves: such strokes are refused.)
+  std::mt19937 random(29);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  StrokeOptions options;
+  options.remesh = {0.1, 0.02};
+  int splits = 0;
+  for (int trial = 0; trial < 9; ++trial) {
+    geometry::Mesh mesh = geometry::make_sphere(1.0, 3);
+    Eigen::MatrixX3d N = vertex_normals(mesh);
+    const Eigen::Vector3d center = mesh.V.row(random() % mesh.vertex_count());
+    const Eigen::Vector3d direction = Eigen::Vector3d(unit(random), unit(random), unit(random)).normalized();
+    const ToolMotion motions[3] = {ToolMotion::translation(2.5 * unit(random) * direction),
+                                   ToolMotion::scaling(std::exp(1.2 * unit(random)), center),
+                                   ToolMotion::rotation(direction, 2 * M_PI * unit(random), center)};
+    const StrokeResult result = sculpt_mesh({{random_tool(random, center, 0.25), motions[trial % 3]}}, options, mesh, N);
+    ASSERT_TRUE(result.applied) << trial << ": " << result.refusal;
+    EXPECT_GT(result.min_jacobian_determinant, 0);
+    EXPECT_TRUE(geometry::find_self_intersections(mesh, 1).pairs.empty());
+    splits += result.splits;
+  }
+  EXPECT_GT(splits, 100);
+}
+
 TEST(SculptStroke, AStrokeAndItsInverseReturnEveryVertex) {
   std::mt19937 random(13);
   for (int trial = 0; trial < 16; ++trial) {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "reconfig/geometry/mesh.h"
+#include "reconfig/sculpt/remesh_in_box.h"
 #include "reconfig/sculpt/substep_count.h"
 
 namespace reconfig::sculpt {
@@ -36,6 +37,8 @@ struct StrokeOptions {
   /// `sculpt_mesh` only: refuse the stroke if the deformed mesh self-intersects (and the
   /// input did not).
   bool check_self_intersections = true;
+  /// `sculpt_mesh` only: remesh inside the sub-step's reach after every sub-step (§5.1).
+  RemeshOptions remesh = {};
 };
 
 /// What a stroke did, or why it was refused.
@@ -47,7 +50,8 @@ struct StrokeResult {
   /// The least Jacobian determinant of one sub-step's map, over the grid samples and the
   /// vertices of every sub-step (1 if nothing was in reach). > 0: no sub-step folds space.
   double min_jacobian_determinant = 1;
-  int vertices_moved = 0;      ///< vertices that ended somewhere else
+  int vertices_moved = 0;      ///< vertices that ended somewhere else (without remeshing)
+  int splits = 0, collapses = 0;  ///< edges split and collapsed by remeshing
   std::vector<Tool> tools;     ///< the tools where the stroke left them (for the next stroke)
 };
 
@@ -70,7 +74,10 @@ StrokeResult deform_points(const std::vector<MovingTool>& tools, const StrokeOpt
 
 /// `deform_points` on a mesh's vertices, then (if `check_self_intersections`) the exact
 /// self-intersection test of the deformed mesh (geometry/self_intersections.h): a stroke that
-/// makes the mesh self-intersect is refused and the mesh left as it was.
+/// makes the mesh self-intersect is refused and the mesh left as it was. With remeshing, each
+/// sub-step is deformed on its own (the same sub-steps: tools at k/s and (k+1)/s) and followed
+/// by `remesh_in_box` over the sub-step's reach; `vertices_moved` then counts the vertices
+/// moved by the sub-steps, summed.
 /// @param tools    as `deform_points`
 /// @param options  as `deform_points`
 /// @param mesh     #V×3, #F×3, deformed in place

@@ -27,6 +27,8 @@ struct ToolMotion {
   /// @param axis  rotation axis (non-zero; normalized here), @param radians θ (right hand rule)
   static ToolMotion rotation(const Eigen::Vector3d& axis, double radians, const Eigen::Vector3d& center);
 
+  /// α ⊙ M as a motion of its own (one sub-step of a stroke: α = 1/s).
+  ToolMotion fraction(double alpha) const;
   /// M⁻¹: the stroke that undoes this one.
   ToolMotion inverse() const;
 
