@@ -64,6 +64,16 @@ void BM_SubstepSphereToolBlended(benchmark::State& state) {
 }
 BENCHMARK(BM_SubstepSphereToolBlended)->Unit(benchmark::kMillisecond)->UseRealTime();
 
+/// A drag frame: the same one-sub-step stroke on the mesh, remeshed in its reach (edges kept
+/// between 0.004 and 0.016, around the icosphere's 0.0077), no self-intersection check.
+void BM_DragFrameWithRemeshing(benchmark::State& state) {
+  sculpt::StrokeOptions options;
+  options.remesh = {0.016, 0.004};
+  options.check_self_intersections = false;
+  run_strokes(state, options, true);
+}
+BENCHMARK(BM_DragFrameWithRemeshing)->Unit(benchmark::kMillisecond)->UseRealTime();
+
 void BM_StrokeWithSelfIntersectionCheck(benchmark::State& state) {
   run_strokes(state, {}, true);
 }

@@ -1,7 +1,6 @@
 #include "reconfig/sculpt/remesh_in_box.h"
 
 #include <algorithm>
-#include <map>
 #include <set>
 #include <utility>
 #include <vector>
@@ -30,15 +29,28 @@ struct Work {
 using Edge = std::pair<int, int>;
 Edge edge(int a, int b) { return {std::min(a, b), std::max(a, b)}; }
 
-/// Faces with a vertex in the box, and the faces of each of their edges.
-std::map<Edge, std::vector<int>> edge_faces(const Work& work) {
-  std::map<Edge, std::vector<int>> faces;
+/// One side of an edge (the edge and one of its faces): sorted by edge, the two faces of an edge
+/// of a closed manifold come next to each other.
+struct EdgeSide {
+  Edge edge;
+  int face = 0;
+  bool operator<(const EdgeSide& other) const { return edge < other.edge || (edge == other.edge && face < other.face); }
+};
+
+/// The sides of the edges longer than `max_edge` with an endpoint in the box.
+std::vector<EdgeSide> long_edge_sides(const Work& work, double max_edge) {
+  std::vector<EdgeSide> sides;
   for (int f = 0; f < static_cast<int>(work.F.size()); ++f) {
     const auto& t = work.F[f];
-    if (t[0] < 0 || !(work.in_box[t[0]] || work.in_box[t[1]] || work.in_box[t[2]])) continue;
-    for (int i = 0; i < 3; ++i) faces[edge(t[i], t[(i + 1) % 3])].push_back(f);
+    if (t[0] < 0) continue;
+    for (int i = 0; i < 3; ++i) {
+      const Edge e = edge(t[i], t[(i + 1) % 3]);
+      if ((work.in_box[e.first] || work.in_box[e.second]) && work.length(e.first, e.second) > max_edge)
+        sides.push_back({e, f});
+    }
   }
-  return faces;
+  std::sort(sides.begin(), sides.end());
+  return sides;
 }
 
 /// Replaces face f = (x, y, c) with its edge x→y split at m by (x, m, c) and (m, y, c).
@@ -51,26 +63,36 @@ void split_face(Work& work, int f, int a, int b, int m) {
   work.F.push_back({m, y, c});
 }
 
+struct LongEdge {
+  double length = 0;
+  Edge edge;
+  int faces[2] = {0, 0};
+};
+
 int split_pass(Work& work, const Eigen::AlignedBox3d& box, double max_edge) {
-  const auto faces = edge_faces(work);
-  std::vector<std::pair<double, Edge>> long_edges;
-  for (const auto& [e, adjacent] : faces)
-    if (adjacent.size() == 2 && (work.in_box[e.first] || work.in_box[e.second]) && work.length(e.first, e.second) > max_edge)
-      long_edges.push_back({work.length(e.first, e.second), e});
-  std::sort(long_edges.begin(), long_edges.end(), [](const auto& x, const auto& y) { return x.first > y.first || (x.first == y.first && x.second < y.second); });
-  std::set<int> used;
+  const std::vector<EdgeSide> sides = long_edge_sides(work, max_edge);
+  std::vector<LongEdge> long_edges;
+  for (std::size_t i = 0; i + 1 < sides.size(); ++i) {
+    const Edge e = sides[i].edge;
+    if (sides[i + 1].edge != e || (i + 2 < sides.size() && sides[i + 2].edge == e)) continue;  // two faces only
+    long_edges.push_back({work.length(e.first, e.second), e, {sides[i].face, sides[i + 1].face}});
+    ++i;
+  }
+  std::sort(long_edges.begin(), long_edges.end(), [](const LongEdge& x, const LongEdge& y) {
+    return x.length > y.length || (x.length == y.length && x.edge < y.edge);
+  });
+  std::vector<char> used(work.F.size(), 0);
   int splits = 0;
-  for (const auto& [length, e] : long_edges) {
-    const std::vector<int>& adjacent = faces.at(e);
-    if (used.count(adjacent[0]) || used.count(adjacent[1])) continue;
-    used.insert(adjacent.begin(), adjacent.end());
-    const auto [a, b] = e;
+  for (const LongEdge& long_edge : long_edges) {
+    if (used[long_edge.faces[0]] || used[long_edge.faces[1]]) continue;
+    used[long_edge.faces[0]] = used[long_edge.faces[1]] = 1;
+    const auto [a, b] = long_edge.edge;
     Eigen::Vector3d n = work.N[a] + work.N[b];
     if (n.norm() > 0) n.normalize();
     const Eigen::Vector3d p = (work.V[a] + work.V[b]) / 2;
     const int m = work.add_vertex(p, n, box.contains(p));
-    split_face(work, adjacent[0], a, b, m);
-    split_face(work, adjacent[1], a, b, m);
+    split_face(work, long_edge.faces[0], a, b, m);
+    split_face(work, long_edge.faces[1], a, b, m);
     ++splits;
   }
   return splits;
@@ -118,18 +140,21 @@ bool try_collapse(Work& work, const std::vector<std::vector<int>>& vertex_faces,
 }
 
 int collapse_pass(Work& work, double min_edge, double max_edge) {
-  std::vector<std::vector<int>> vertex_faces(work.V.size());
   std::vector<std::pair<double, Edge>> short_edges;
-  for (int f = 0; f < static_cast<int>(work.F.size()); ++f) {
-    const auto& t = work.F[f];
-    if (t[0] < 0 || !(work.in_box[t[0]] || work.in_box[t[1]] || work.in_box[t[2]])) continue;
+  for (const auto& t : work.F) {
+    if (t[0] < 0) continue;
     for (int i = 0; i < 3; ++i) {
-      vertex_faces[t[i]].push_back(f);
       const int a = t[i], b = t[(i + 1) % 3];
       if (a < b && work.in_box[a] && work.in_box[b] && work.length(a, b) < min_edge) short_edges.push_back({work.length(a, b), {a, b}});
     }
   }
+  if (short_edges.empty()) return 0;
   std::sort(short_edges.begin(), short_edges.end());
+  std::vector<std::vector<int>> vertex_faces(work.V.size());  // of the vertices in the box only
+  for (int f = 0; f < static_cast<int>(work.F.size()); ++f)
+    if (work.F[f][0] >= 0)
+      for (int v : work.F[f])
+        if (work.in_box[v]) vertex_faces[v].push_back(f);
   std::vector<char> locked(work.V.size(), 0);
   int collapses = 0;
   for (const auto& [length, e] : short_edges) {
