@@ -36,7 +36,7 @@ SubstepPoint substep_at(const detail::HalfStep& forward, const detail::HalfStep&
   if (normal) out.normal = *normal;
   if (!moved_forward && out.position == middle) return out;  // bit for bit: this point is out of reach
   const double det1 = J1.determinant(), det2 = J2.determinant();
-  out.determinant = det2 > 0 ? det1 / det2 : -std::abs(det1 * det2) - 1e-300;
+  out.determinant = det2 > 0 ? det1 / det2 : det2;  // a backward half-step that folds is the measure
   if (normal && det1 > 0 && det2 > 0) {  // cof(J) n ∝ J⁻ᵀ n with J = J2⁻¹ J1
     out.normal = (J2.transpose() * J1.inverse().transpose() * *normal).normalized();
   }
