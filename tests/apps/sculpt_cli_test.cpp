@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include <filesystem>
@@ -92,6 +93,45 @@ TEST(SculptCli, RemeshingKeepsAPulledFeatureResolved) {
   const nlohmann::json report = nlohmann::json::parse(run.out);
   EXPECT_GT(report["triangles_after"].get<int>(), report["triangles_before"].get<int>());
   EXPECT_GT(report["strokes"][0]["splits"].get<int>(), 20);
+}
+
+TEST(SculptCli, AMirroredStrokeShapesBothSidesAlike) {
+  // The armrest is symmetric in x = 0: a stroke on one side, mirrored, leaves it symmetric.
+  const auto out = testing::fresh_temp_dir() / "mirrored.obj";
+  const auto run = run_reconfig("sculpt " + example("meshes/armrest.obj") + " --tool sphere:0.01 --at 0.025,0.1,0.02"
+                                " --coating 0.02 --translate 0.01,0,0.005 --mirror x -o " + out.string() + " --json");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const std::vector<double> v = obj_coordinates(out);
+  std::vector<std::array<double, 3>> points, reflected;
+  for (std::size_t i = 0; i + 2 < v.size(); i += 3) {
+    points.push_back({v[i], v[i + 1], v[i + 2]});
+    reflected.push_back({-v[i], v[i + 1], v[i + 2]});
+  }
+  std::sort(points.begin(), points.end());
+  std::sort(reflected.begin(), reflected.end());
+  double largest = 0;
+  for (std::size_t i = 0; i < points.size(); ++i)
+    for (int k = 0; k < 3; ++k) largest = std::max(largest, std::abs(points[i][k] - reflected[i][k]));
+  EXPECT_LT(largest, 1e-9);
+  const std::vector<double> rest = obj_coordinates(example("meshes/armrest.obj"));
+  double moved = 0;
+  for (std::size_t i = 0; i < rest.size(); ++i) moved = std::max(moved, std::abs(rest[i] - v[i]));
+  EXPECT_GT(moved, 0.005);  // the stroke did something
+}
+
+TEST(SculptCli, AMeshCanBeATool) {
+  const auto dir = testing::fresh_temp_dir();
+  // The armrest itself, 3 cm above, pressed 1.5 cm down into the armrest's top.
+  const auto run = run_reconfig("sculpt " + example("meshes/armrest.obj") + " --tool mesh:" + example("meshes/armrest.obj") +
+                                " --at 0,0,0.03 --coating 0.01 --translate 0,0,-0.015 -o " + (dir / "pressed.obj").string() + " --json");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_GT(nlohmann::json::parse(run.out)["strokes"][0]["vertices_moved"].get<int>(), 500);
+  // An open mesh is not a tool.
+  std::ofstream(dir / "open.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  const auto open = run_reconfig("sculpt " + example("meshes/armrest.obj") + " --tool mesh:" + (dir / "open.obj").string() +
+                                 " --coating 0.01 --translate 0,0,-0.015 -o " + (dir / "x.obj").string());
+  EXPECT_EQ(open.exit_code, 2);
+  EXPECT_NE(open.err.find("closed"), std::string::npos) << open.err;
 }
 
 TEST(SculptCli, ARefusedStrokeExitsTwoAndWritesNothing) {
