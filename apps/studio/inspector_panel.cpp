@@ -97,6 +97,7 @@ void Studio::draw_inspector() {
   }
   if (ImGui::Button("Insert key (I)")) insert_key();
   draw_resolve_section();
+  draw_sculpt_section();
 
   ImGui::Separator();
   ImGui::BeginDisabled(document_->undo_label().empty());

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -172,6 +173,49 @@ class Runner {
     frontend_.run_frame();
   }
 
+  /// sculpt PART sphere|box|capsule|ellipsoid SX SY SZ COATING CX CY CZ (translate DX DY DZ |
+  /// scale F | rotate AX AY AZ DEGREES) [mirror x|y|z]
+  void sculpt(const std::vector<std::string>& args) {
+    if (args.size() < 10) fail("sculpt needs PART SHAPE SX SY SZ COATING CX CY CZ and a stroke");
+    const int part = scene().find_part(args[0]);
+    if (part < 0) fail(fmt::format("no part \"{}\"", args[0]));
+    Studio::SculptSettings settings;
+    const std::vector<std::string> shapes = {"sphere", "box", "capsule", "ellipsoid"};
+    const auto shape = std::find(shapes.begin(), shapes.end(), args[1]);
+    if (shape == shapes.end()) fail(fmt::format("unknown tool \"{}\" (sphere, box, capsule, ellipsoid)", args[1]));
+    settings.shape = static_cast<int>(shape - shapes.begin());
+    settings.size = {number(args, 2, "size x"), number(args, 3, "size y"), number(args, 4, "size z")};
+    settings.coating = number(args, 5, "coating");
+    settings.center = {number(args, 6, "center x"), number(args, 7, "center y"), number(args, 8, "center z")};
+    std::size_t next = 10;
+    if (args[9] == "translate") {
+      settings.stroke = 0;
+      settings.translation = {number(args, 10, "dx"), number(args, 11, "dy"), number(args, 12, "dz")};
+      next = 13;
+    } else if (args[9] == "scale") {
+      settings.stroke = 1;
+      settings.factor = number(args, 10, "factor");
+      next = 11;
+    } else if (args[9] == "rotate") {
+      settings.stroke = 2;
+      settings.axis = {number(args, 10, "axis x"), number(args, 11, "axis y"), number(args, 12, "axis z")};
+      settings.degrees = number(args, 13, "degrees");
+      next = 14;
+    } else {
+      fail(fmt::format("unknown stroke \"{}\" (translate, scale, rotate)", args[9]));
+    }
+    if (next < args.size()) {
+      if (args[next] != "mirror" || next + 1 >= args.size() || args[next + 1].size() != 1 ||
+          args[next + 1][0] < 'x' || args[next + 1][0] > 'z')
+        fail("after the stroke: mirror x|y|z");
+      settings.mirror = args[next + 1][0] - 'x';
+    }
+    studio().select_part(part);
+    studio().sculpt_settings() = settings;
+    if (!studio().sculpt_selected_part()) fail(studio().status());
+    frontend_.run_frame();
+  }
+
   void perform(const std::string& action, const std::vector<std::string>& args) {
     SimulatedInput& input = frontend_.input();
     if (action == "frames") {
@@ -246,6 +290,8 @@ class Runner {
     } else if (action == "slide-hint") {
       if (!studio().slide_along_hint(number(args, 0, "amount along the hint"))) fail(studio().status());
       frontend_.run_frame();
+    } else if (action == "sculpt") {
+      sculpt(args);
     } else if (action == "resolve-auto") {
       resolve_automatically(args.empty() ? 120 : number(args, 0, "timeout in seconds"));
     } else if (action == "expect-collisions") {

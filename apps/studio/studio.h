@@ -153,6 +153,28 @@ class Studio {
     bool sliding = false;               ///< a slide's edit is applied and may be replaced
   };
   const std::optional<HintView>& resolution_hint() const { return hint_; }
+  /// A sculpting stroke for the selected part (sculpt_panel.cpp), in the part's rest frame:
+  /// a tool of `shape` at `center` moved by one translation, scaling (about its center) or
+  /// rotation (about an axis through its center), mirrored in a coordinate plane if asked.
+  struct SculptSettings {
+    int shape = 0;  ///< 0 sphere (radius size.x), 1 box (edge lengths), 2 capsule (radius, length), 3 ellipsoid
+    Eigen::Vector3d size = Eigen::Vector3d::Constant(0.05);
+    double coating = 0.05;
+    Eigen::Vector3d center = Eigen::Vector3d::Zero();
+    int stroke = 0;  ///< 0 translate, 1 scale, 2 rotate
+    Eigen::Vector3d translation = Eigen::Vector3d(0, 0, 0.02);
+    double factor = 1.2;
+    Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();
+    double degrees = 30;
+    int mirror = -1;    ///< −1 none, 0 x = 0, 1 y = 0, 2 z = 0
+    double remesh = 0;  ///< > 0: remesh to edges of at most this length (and at least a quarter)
+  };
+  SculptSettings& sculpt_settings() { return sculpt_settings_; }
+  /// Applies the stroke of `sculpt_settings()` to the selected part's mesh as one undoable edit
+  /// (saved beside the design), the collision service re-detecting the part's transitions.
+  /// @return false (the status line says why) with no part selected, bad settings, or a stroke
+  ///   the foldover or self-intersection checks refuse
+  bool sculpt_selected_part();
 
   // ---- what the UI shows (for tests and scripts) ----------------------------------------
   int active_transition() const { return active_transition_; }
@@ -204,6 +226,8 @@ class Studio {
   void draw_collision_settings();
   /// The inspector's section for hints and automatic resolution (resolve_panel.cpp).
   void draw_resolve_section();
+  /// The inspector's section for sculpting the selected part (sculpt_panel.cpp).
+  void draw_sculpt_section();
   /// The hint's arrows (at translation keys and handles) and arcs (about the pivot, for
   /// rotation keys), for the viewport's draw list.
   void add_hint_arrows(render::DrawList& list) const;
@@ -312,6 +336,7 @@ class Studio {
     std::future<resolve::AutoResolveResult> result;
   };
   std::unique_ptr<AutoResolveJob> auto_resolve_;
+  SculptSettings sculpt_settings_;  ///< sculpt_panel.cpp
   std::unique_ptr<std::future<HintView>> hint_job_;  ///< a hint computed in the background
   bool quit_ = false;
 };
