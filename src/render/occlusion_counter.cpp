@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstddef>
 #include <stdexcept>
 
 #include "detail/gl_program.h"
@@ -11,17 +12,20 @@
 namespace reconfig::render {
 namespace {
 
-// Camera `first_camera + gl_InstanceID` of the batch draws into its own tile of the atlas: its
-// clip coordinates are clipped to its frustum's sides (gl_ClipDistance) and then scaled into
-// the tile. The view-projection matrices are columns of a buffer texture, 4 texels each.
+// Camera `gl_InstanceID` of the batch (occluders: one instance per camera), or the vertex's
+// own `box_camera` (boxes: one copy per camera, drawn one range at a time without a state
+// change between the queries), draws into its own tile of the atlas: its clip coordinates are
+// clipped to its frustum's sides (gl_ClipDistance), then scaled into the tile. The
+// view-projection matrices are columns of a buffer texture, 4 texels each.
 constexpr const char* kTileVertex = R"(#version 330 core
 layout(location = 0) in vec3 position;
+layout(location = 1) in int box_camera;
 uniform samplerBuffer view_projections;
-uniform int first_camera;
+uniform int instanced;
 uniform int tiles_per_row;
 out float gl_ClipDistance[4];
 void main() {
-  int camera = first_camera + gl_InstanceID;
+  int camera = instanced != 0 ? gl_InstanceID : box_camera;
   mat4 m = mat4(texelFetch(view_projections, 4 * camera), texelFetch(view_projections, 4 * camera + 1),
                 texelFetch(view_projections, 4 * camera + 2), texelFetch(view_projections, 4 * camera + 3));
   vec4 clip = m * vec4(position, 1.0);
@@ -46,6 +50,11 @@ constexpr std::array<int, 36> kBoxCorners = {0, 2, 3, 0, 3, 1,  4, 5, 7, 4, 7, 6
                                              2, 6, 7, 2, 7, 3,  0, 4, 6, 0, 6, 2,  1, 3, 7, 1, 7, 5};
 
 constexpr int kMaxAtlasSide = 1024;
+
+struct BoxVertex {
+  float x, y, z;
+  GLint camera;
+};
 constexpr int kMaxTilesPerRow = 16;
 
 }  // namespace
@@ -53,7 +62,7 @@ constexpr int kMaxTilesPerRow = 16;
 struct OcclusionCounter::Impl {
   int resolution = 64, tiles_per_row = 1;
   GLuint program = 0;
-  GLint first_camera = -1;
+  GLint instanced = -1;
   GLuint framebuffer = 0, depth = 0;
   GLuint matrices_buffer = 0, matrices_texture = 0;
   GLuint occluder_vao = 0, occluder_vbo = 0, occluder_ebo = 0;
@@ -64,7 +73,7 @@ struct OcclusionCounter::Impl {
   int batch_size() const { return tiles_per_row * tiles_per_row; }
   int atlas_side() const { return tiles_per_row * resolution; }
   void upload_box(const Eigen::AlignedBox3d& box);
-  void count_batch(const view::Camera* cameras, int n, OcclusionCount* out);
+  void count_batch(const view::Camera* cameras, int n, bool totals, OcclusionCount* out);
   void draw_box(int camera);
 };
 
@@ -73,7 +82,7 @@ OcclusionCounter::OcclusionCounter(int resolution) : impl_(std::make_unique<Impl
   c.resolution = std::max(resolution, 8);
   c.tiles_per_row = std::clamp(kMaxAtlasSide / c.resolution, 1, kMaxTilesPerRow);
   c.program = detail::link_program(kTileVertex, kDepthOnlyFragment);
-  c.first_camera = glGetUniformLocation(c.program, "first_camera");
+  c.instanced = glGetUniformLocation(c.program, "instanced");
   glUseProgram(c.program);
   glUniform1i(glGetUniformLocation(c.program, "view_projections"), 0);
   glUniform1i(glGetUniformLocation(c.program, "tiles_per_row"), c.tiles_per_row);
@@ -102,17 +111,22 @@ OcclusionCounter::OcclusionCounter(int resolution) : impl_(std::make_unique<Impl
   glBindTexture(GL_TEXTURE_BUFFER, 0);
   glBindBuffer(GL_TEXTURE_BUFFER, 0);
 
-  for (auto [vao, vbo] : {std::pair{&c.occluder_vao, &c.occluder_vbo}, std::pair{&c.box_vao, &c.box_vbo}}) {
-    glGenVertexArrays(1, vao);
-    glGenBuffers(1, vbo);
-    glBindVertexArray(*vao);
-    glBindBuffer(GL_ARRAY_BUFFER, *vbo);
-    glEnableVertexAttribArray(0);
-    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), nullptr);
-  }
-  glBindVertexArray(c.occluder_vao);
+  glGenVertexArrays(1, &c.occluder_vao);
+  glGenBuffers(1, &c.occluder_vbo);
   glGenBuffers(1, &c.occluder_ebo);
+  glBindVertexArray(c.occluder_vao);
+  glBindBuffer(GL_ARRAY_BUFFER, c.occluder_vbo);
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), nullptr);
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, c.occluder_ebo);
+  glGenVertexArrays(1, &c.box_vao);
+  glGenBuffers(1, &c.box_vbo);
+  glBindVertexArray(c.box_vao);
+  glBindBuffer(GL_ARRAY_BUFFER, c.box_vbo);
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(BoxVertex), nullptr);
+  glEnableVertexAttribArray(1);
+  glVertexAttribIPointer(1, 1, GL_INT, sizeof(BoxVertex), reinterpret_cast<void*>(offsetof(BoxVertex, camera)));
   glBindVertexArray(0);
   c.queries.resize(2 * c.batch_size());
   glGenQueries(static_cast<GLsizei>(c.queries.size()), c.queries.data());
@@ -148,22 +162,25 @@ void OcclusionCounter::set_occluders(const Eigen::MatrixX3d& V, const Eigen::Mat
   detail::check_gl("uploading occluders");
 }
 
+// One copy of the box's triangles per camera of a batch.
 void OcclusionCounter::Impl::upload_box(const Eigen::AlignedBox3d& box) {
-  std::array<float, 3 * kBoxCorners.size()> corners{};
-  for (std::size_t i = 0; i < kBoxCorners.size(); ++i) {
-    const Eigen::Vector3d p = box.corner(static_cast<Eigen::AlignedBox3d::CornerType>(kBoxCorners[i]));
-    for (int k = 0; k < 3; ++k) corners[3 * i + k] = static_cast<float>(p[k]);
-  }
+  std::vector<BoxVertex> vertices;
+  vertices.reserve(kBoxCorners.size() * batch_size());
+  for (int camera = 0; camera < batch_size(); ++camera)
+    for (int corner : kBoxCorners) {
+      const Eigen::Vector3f p = box.corner(static_cast<Eigen::AlignedBox3d::CornerType>(corner)).cast<float>();
+      vertices.push_back({p.x(), p.y(), p.z(), camera});
+    }
   glBindBuffer(GL_ARRAY_BUFFER, box_vbo);
-  glBufferData(GL_ARRAY_BUFFER, sizeof corners, corners.data(), GL_STREAM_DRAW);
+  glBufferData(GL_ARRAY_BUFFER, vertices.size() * sizeof(BoxVertex), vertices.data(), GL_STREAM_DRAW);
 }
 
 void OcclusionCounter::Impl::draw_box(int camera) {
-  glUniform1i(first_camera, camera);
-  glDrawArraysInstanced(GL_TRIANGLES, 0, static_cast<GLsizei>(kBoxCorners.size()), 1);
+  constexpr auto n = static_cast<GLsizei>(kBoxCorners.size());
+  glDrawArrays(GL_TRIANGLES, camera * n, n);
 }
 
-void OcclusionCounter::Impl::count_batch(const view::Camera* cameras, int n, OcclusionCount* out) {
+void OcclusionCounter::Impl::count_batch(const view::Camera* cameras, int n, bool totals, OcclusionCount* out) {
   std::vector<float> matrices(16 * static_cast<std::size_t>(n));
   for (int i = 0; i < n; ++i) {
     const Eigen::Matrix4f m = (cameras[i].projection_matrix(1.0) * cameras[i].view_matrix()).cast<float>();
@@ -178,11 +195,12 @@ void OcclusionCounter::Impl::count_batch(const view::Camera* cameras, int n, Occ
   // The occluders' depth, every camera at once, both sides of every triangle.
   glDisable(GL_CULL_FACE);
   glDepthFunc(GL_LESS);
-  glUniform1i(first_camera, 0);
+  glUniform1i(instanced, 1);
   glBindVertexArray(occluder_vao);
   if (occluder_indices > 0) glDrawElementsInstanced(GL_TRIANGLES, occluder_indices, GL_UNSIGNED_INT, nullptr, n);
   // The box, front faces only (each pixel once), pulled a little towards the eye so that its
   // faces lying on an occluder's surface count as seen; not written into the depth buffer.
+  glUniform1i(instanced, 0);
   glBindVertexArray(box_vao);
   glEnable(GL_CULL_FACE);
   glCullFace(GL_BACK);
@@ -195,16 +213,18 @@ void OcclusionCounter::Impl::count_batch(const view::Camera* cameras, int n, Occ
     draw_box(i);
     glEndQuery(GL_SAMPLES_PASSED);
   }
-  glDepthFunc(GL_ALWAYS);
-  for (int i = 0; i < n; ++i) {
-    glBeginQuery(GL_SAMPLES_PASSED, queries[2 * i + 1]);
-    draw_box(i);
-    glEndQuery(GL_SAMPLES_PASSED);
+  if (totals) {
+    glDepthFunc(GL_ALWAYS);
+    for (int i = 0; i < n; ++i) {
+      glBeginQuery(GL_SAMPLES_PASSED, queries[2 * i + 1]);
+      draw_box(i);
+      glEndQuery(GL_SAMPLES_PASSED);
+    }
   }
   for (int i = 0; i < n; ++i) {
     GLuint visible = 0, total = 0;
     glGetQueryObjectuiv(queries[2 * i], GL_QUERY_RESULT, &visible);
-    glGetQueryObjectuiv(queries[2 * i + 1], GL_QUERY_RESULT, &total);
+    if (totals) glGetQueryObjectuiv(queries[2 * i + 1], GL_QUERY_RESULT, &total);
     out[i] = {static_cast<long>(visible), static_cast<long>(total)};
   }
   glDisable(GL_POLYGON_OFFSET_FILL);
@@ -214,7 +234,7 @@ void OcclusionCounter::Impl::count_batch(const view::Camera* cameras, int n, Occ
 }
 
 std::vector<OcclusionCount> OcclusionCounter::count(const Eigen::AlignedBox3d& box,
-                                                    const std::vector<view::Camera>& cameras) {
+                                                    const std::vector<view::Camera>& cameras, bool totals) {
   Impl& c = *impl_;
   std::vector<OcclusionCount> counts(cameras.size());
   if (cameras.empty() || box.isEmpty()) return counts;
@@ -235,7 +255,7 @@ std::vector<OcclusionCount> OcclusionCounter::count(const Eigen::AlignedBox3d& b
   c.upload_box(box);
   const int total = static_cast<int>(cameras.size());
   for (int first = 0; first < total; first += c.batch_size())
-    c.count_batch(cameras.data() + first, std::min(c.batch_size(), total - first), counts.data() + first);
+    c.count_batch(cameras.data() + first, std::min(c.batch_size(), total - first), totals, counts.data() + first);
 
   glBindTexture(GL_TEXTURE_BUFFER, 0);
   glBindVertexArray(0);

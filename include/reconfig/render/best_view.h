@@ -11,6 +11,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "reconfig/render/occlusion_counter.h"
@@ -28,9 +29,10 @@ struct BestViewRequest {
   Eigen::AlignedBox3d box;  ///< X, the interval's box
   bool ground = true;       ///< the design stands on a ground: sample only the northern hemisphere
   int samples = 1000;       ///< random directions when sampling (the six axis views are added)
+  bool always_sample = false;  ///< sample even when ±(rA × rB) would do (two parts)
   std::uint64_t seed = 1;
   /// Occluders beyond this many triangles are simplified for the counts (display_simplification.h).
-  int max_triangles = 200000;
+  int max_triangles = 4000;
   double fov_y = view::Camera{}.fov_y;
 };
 
@@ -49,9 +51,12 @@ struct BestView {
 /// @param scene a validated reconfigurable; request.transition and parts valid indices
 BestView best_view(OcclusionCounter& counter, const scene::Reconfigurable& scene, const BestViewRequest& request);
 
-/// The parts of `scene` but `excluded` posed at time t of `transition`, as one triangle soup
-/// (#V×3, #F×3), each simplified to its share of `max_triangles` when they have more.
+/// The triangles of the parts of `scene` but `excluded`, posed at time t of `transition`, that
+/// come within `reach` of `center` (by their bounding boxes), as one soup (#V×3, #F×3); each
+/// part's share simplified to its share of `max_triangles` when they are more.
 void posed_occluders(const scene::Reconfigurable& scene, int transition, double t, const std::vector<int>& excluded,
-                     int max_triangles, Eigen::MatrixX3d& V, Eigen::MatrixX3i& F);
+                     int max_triangles, Eigen::MatrixX3d& V, Eigen::MatrixX3i& F,
+                     const Eigen::Vector3d& center = Eigen::Vector3d::Zero(),
+                     double reach = std::numeric_limits<double>::infinity());
 
 }  // namespace reconfig::render

@@ -17,7 +17,7 @@ namespace reconfig::render {
 /// Pixels of the box in one camera's square image.
 struct OcclusionCount {
   long visible = 0;  ///< not hidden by an occluder (faces lying on an occluder's surface count)
-  long total = 0;    ///< covered by the box with nothing in front of it
+  long total = 0;    ///< covered by the box were nothing in front of it
   double visible_fraction() const { return total > 0 ? static_cast<double>(visible) / total : 0.0; }
 };
 
@@ -36,8 +36,10 @@ class OcclusionCounter {
   /// Both sides of each triangle occlude (a camera inside a part sees nothing).
   void set_occluders(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F);
 
-  /// For each camera (drawn with aspect 1 at `resolution()` pixels a side), the pixels of `box`.
-  std::vector<OcclusionCount> count(const Eigen::AlignedBox3d& box, const std::vector<view::Camera>& cameras);
+  /// For each camera (drawn with aspect 1 at `resolution()` pixels a side), the pixels of `box`;
+  /// without `totals` only the visible ones (`total` stays 0: half the queries).
+  std::vector<OcclusionCount> count(const Eigen::AlignedBox3d& box, const std::vector<view::Camera>& cameras,
+                                    bool totals = true);
 
   int resolution() const;
   /// Cameras drawn per batch (tiles in the atlas).
