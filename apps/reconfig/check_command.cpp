@@ -9,12 +9,14 @@
 
 #include "command.h"
 #include "interrupt_guard.h"
+#include "interval_view.h"
 #include "progress_bar.h"
 #include "reconfig/collision/detect_collisions.h"
 #include "reconfig/collision/detector_settings.h"
 #include "reconfig/collision/reference_check.h"
 #include "reconfig/common/input_error.h"
 #include "reconfig/common/write_atomically.h"
+#include "reconfig/render/egl_context.h"
 #include "reconfig/resolve/interval_energy.h"
 #include "reconfig/scene/scene_file.h"
 
@@ -34,6 +36,7 @@ struct CheckOptions {
   scene::CollisionSettings given;  ///< which of them were given
   bool all_contacts = false;
   bool energy = false;
+  bool views = false;
   int threads = 0;
   int samples = 1000;
   std::vector<std::string> transitions;
@@ -49,6 +52,8 @@ struct CheckOutcome {
   double seconds = 0;
   /// With --energy: per transition, per interval (same order as `transitions`).
   std::vector<std::vector<resolve::IntervalEnergy>> energies = {};
+  /// With --views: per transition, per interval, its view at the severity time.
+  std::vector<std::vector<render::BestView>> views = {};
 
   bool any_collision() const {
     for (const auto& t : transitions)
@@ -88,6 +93,8 @@ nlohmann::ordered_json to_json(const scene::Reconfigurable& scene, const CheckOu
         intervals.back()["penetration_energy"] = e.penetration_energy;
         intervals.back()["severity_time"] = e.severity_time;
       }
+      if (!outcome.views.empty())
+        intervals.back()["view"] = view_json(outcome.views[t][&ci - transition.intervals.data()]);
     }
     root["transitions"].push_back({{"name", transition.name}, {"intervals", intervals}});
   }
@@ -126,6 +133,12 @@ std::string text_report(const scene::Reconfigurable& scene, const CheckOutcome& 
         const auto& e = outcome.energies[&transition - outcome.transitions.data()][&ci - transition.intervals.data()];
         out += fmt::format("      energy {:.4g} (contour {:.4g}, penetration {:.4g}), most severe at t = {:.3f}\n",
                            e.energy, e.contour_energy, e.penetration_energy, e.severity_time);
+      }
+      if (!outcome.views.empty()) {
+        const auto& v = outcome.views[&transition - outcome.transitions.data()][&ci - transition.intervals.data()];
+        const Eigen::Vector3d eye = v.camera.eye();
+        out += fmt::format("      best seen from ({:.3f}, {:.3f}, {:.3f}), {:.0f} % of its box in sight\n", eye.x(),
+                           eye.y(), eye.z(), 100 * v.pixels.visible_fraction());
       }
     }
   }
@@ -210,6 +223,22 @@ std::vector<std::vector<resolve::IntervalEnergy>> interval_energies(
   return energies;
 }
 
+/// The view of every interval at its severity time (--views), drawn headless.
+std::vector<std::vector<render::BestView>> interval_views(const scene::Reconfigurable& scene,
+                                                          const CheckOutcome& outcome) {
+  render::EglContext context;
+  render::OcclusionCounter counter;
+  std::vector<std::vector<render::BestView>> views;
+  for (std::size_t t = 0; t < outcome.transitions.size(); ++t) {
+    views.emplace_back();
+    const collision::TransitionCollisions& transition = outcome.transitions[t];
+    for (std::size_t i = 0; i < transition.intervals.size(); ++i)
+      views.back().push_back(interval_best_view(counter, scene, transition.transition, transition.intervals[i],
+                                                outcome.energies[t][i].severity_time));
+  }
+  return views;
+}
+
 int run_check(const CheckOptions& options) {
   std::optional<tbb::global_control> threads;
   if (options.threads > 0) threads.emplace(tbb::global_control::max_allowed_parallelism, options.threads);
@@ -232,7 +261,8 @@ int run_check(const CheckOptions& options) {
     fmt::print(stderr, "reconfig: check cancelled (Ctrl+C): no result\n");
     return kExitInterrupted;
   }
-  if (options.energy) outcome.energies = interval_energies(scene, outcome.transitions);
+  if (options.energy || options.views) outcome.energies = interval_energies(scene, outcome.transitions);
+  if (options.views) outcome.views = interval_views(scene, outcome);
   const nlohmann::ordered_json json = to_json(scene, outcome);
   if (options.json) fmt::print("{}\n", json.dump(2));
   else fmt::print("{}", text_report(scene, outcome, options.scene));
@@ -265,6 +295,9 @@ void add_check_command(CLI::App& app, int& exit_code) {
   command->add_flag("--energy", options->energy,
                     "Also give each interval its intersection energy (contour length plus penetration depth, "
                     "integrated over time) and the time it is most severe");
+  command->add_flag("--views", options->views,
+                    "Also give each interval the camera that shows it best at its severity time (occlusion "
+                    "queries over candidate views, drawn headless; implies --energy)");
   command->add_flag("--all-contacts", options->all_contacts,
                     "Engine: find every intersecting triangle pair instead of stopping once the intervals are known "
                     "(same intervals, slower on deep overlaps)");

@@ -30,6 +30,21 @@ Eigen::MatrixX3i triangles_within(const Eigen::MatrixX3d& V, const Eigen::Matrix
   return F(rows, Eigen::all);
 }
 
+// A square on the plane z = height under `center`, big enough to cover the ball of `reach`
+// around it: the ground, which hides what stands on it from below.
+void add_floor(double height, const Eigen::Vector3d& center, double reach, Eigen::MatrixX3d& V, Eigen::MatrixX3i& F) {
+  const long v = V.rows(), f = F.rows();
+  V.conservativeResize(v + 4, 3);
+  F.conservativeResize(f + 2, 3);
+  const double r = 2 * reach;
+  V.row(v) << center.x() - r, center.y() - r, height;
+  V.row(v + 1) << center.x() + r, center.y() - r, height;
+  V.row(v + 2) << center.x() + r, center.y() + r, height;
+  V.row(v + 3) << center.x() - r, center.y() + r, height;
+  F.row(f) << v, v + 1, v + 2;
+  F.row(f + 1) << v, v + 2, v + 3;
+}
+
 }  // namespace
 
 void posed_occluders(const scene::Reconfigurable& scene, int transition, double t, const std::vector<int>& excluded,
@@ -82,6 +97,7 @@ BestView best_view(OcclusionCounter& counter, const scene::Reconfigurable& scene
   Eigen::MatrixX3i F;
   posed_occluders(scene, request.transition, request.time, request.parts, request.max_triangles, V, F,
                   request.box.center(), reach);
+  if (request.ground) add_floor(bounds.min().z() - 1e-3 * bounds.diagonal().norm(), request.box.center(), reach, V, F);
   counter.set_occluders(V, F);
 
   const auto count_directions = [&](const std::vector<Eigen::Vector3d>& directions) {

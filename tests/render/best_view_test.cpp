@@ -32,6 +32,7 @@ scene::Reconfigurable crossing_boxes(bool slab) {
 
 BestViewRequest crossing_request() {
   BestViewRequest request;
+  request.ground = false;  // floating: from below is as good as from above
   request.time = 0.5;
   request.t0 = 0.35;
   request.t1 = 0.65;
@@ -66,6 +67,7 @@ TEST_F(RenderTest, BestViewSamplesWhenTheMotionsAreParallelOrOnePartHoldsStill) 
   const scene::Reconfigurable parallel =
       testing::sliding_boxes({{{0.4, 0.4, 0.3}, {-1, 0, 0}, {1, 0, 0}}, {{0.4, 0.4, 0.2}, {1, 0.1, 0}, {-1, 0.1, 0}}});
   BestViewRequest request = crossing_request();
+  request.ground = true;
   request.samples = 50;
   const BestView sampled = best_view(counter, parallel, request);
   EXPECT_FALSE(sampled.from_motion);
@@ -74,6 +76,20 @@ TEST_F(RenderTest, BestViewSamplesWhenTheMotionsAreParallelOrOnePartHoldsStill) 
   const scene::Reconfigurable still =
       testing::sliding_boxes({{{0.4, 0.4, 0.3}, {-1, 0, 0}, {1, 0, 0}}, {{0.4, 0.4, 0.2}, {0, 0, 0}, {0, 0, 0}}});
   EXPECT_FALSE(best_view(counter, still, request).from_motion);
+}
+
+TEST_F(RenderTest, BestViewOfADesignOnTheGroundIsNotFromBelowTheFloor) {
+  OcclusionCounter counter;
+  BestViewRequest request = crossing_request();
+  request.ground = true;
+  const BestView open = best_view(counter, crossing_boxes(false), request);
+  EXPECT_TRUE(open.from_motion);
+  EXPECT_LT(angle_between(open.direction, Eigen::Vector3d::UnitZ()), 5 * kDegree);
+  // Slab above, floor below: neither motion normal sees X, the hemisphere is sampled.
+  const BestView covered = best_view(counter, crossing_boxes(true), request);
+  EXPECT_FALSE(covered.from_motion);
+  EXPECT_GE(covered.direction.z(), 0);
+  EXPECT_GT(covered.pixels.visible, 0);
 }
 
 // Three parts meet; four plates stand around them. The chosen view shows, by the ray-cast

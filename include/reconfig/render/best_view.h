@@ -27,7 +27,9 @@ struct BestViewRequest {
   double t0 = 0, t1 = 0;    ///< the interval's extent, for the parts' motions
   std::vector<int> parts;   ///< the parts involved
   Eigen::AlignedBox3d box;  ///< X, the interval's box
-  bool ground = true;       ///< the design stands on a ground: sample only the northern hemisphere
+  /// The design stands on a ground: a floor under its lowest point hides X from below, and
+  /// sampling keeps to the northern hemisphere.
+  bool ground = true;
   int samples = 1000;       ///< random directions when sampling (the six axis views are added)
   bool always_sample = false;  ///< sample even when ±(rA × rB) would do (two parts)
   std::uint64_t seed = 1;
