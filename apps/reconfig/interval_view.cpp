@@ -14,6 +14,13 @@ render::BestView interval_best_view(render::OcclusionCounter& counter, const sce
   return render::best_view(counter, scene, request);
 }
 
+view::Camera picture_camera(const render::BestView& view, const Eigen::AlignedBox3d& scene_bounds) {
+  view::Camera camera = view.camera;
+  camera.fov_y = 1.2;
+  camera.fit_planes(scene_bounds);
+  return camera;
+}
+
 nlohmann::ordered_json view_json(const render::BestView& view) {
   const auto array = [](const Eigen::Vector3d& v) { return nlohmann::ordered_json::array({v.x(), v.y(), v.z()}); };
   return {{"eye", array(view.camera.eye())},
