@@ -4,12 +4,14 @@
 #include <tbb/global_control.h>
 
 #include <chrono>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 #include <optional>
 
 #include "command.h"
 #include "interrupt_guard.h"
 #include "interval_view.h"
+#include "visual_report.h"
 #include "progress_bar.h"
 #include "reconfig/collision/detect_collisions.h"
 #include "reconfig/collision/detector_settings.h"
@@ -223,18 +225,18 @@ std::vector<std::vector<resolve::IntervalEnergy>> interval_energies(
   return energies;
 }
 
-/// The view of every interval at its severity time (--views), drawn headless.
-std::vector<std::vector<render::BestView>> interval_views(const scene::Reconfigurable& scene,
-                                                          const CheckOutcome& outcome) {
-  render::EglContext context;
+/// The view of every interval at its severity time (--views). Needs a current OpenGL context.
+std::vector<std::vector<render::BestView>> interval_views(
+    const scene::Reconfigurable& scene, const std::vector<collision::TransitionCollisions>& transitions,
+    const std::vector<std::vector<resolve::IntervalEnergy>>& energies) {
   render::OcclusionCounter counter;
   std::vector<std::vector<render::BestView>> views;
-  for (std::size_t t = 0; t < outcome.transitions.size(); ++t) {
+  for (std::size_t t = 0; t < transitions.size(); ++t) {
     views.emplace_back();
-    const collision::TransitionCollisions& transition = outcome.transitions[t];
+    const collision::TransitionCollisions& transition = transitions[t];
     for (std::size_t i = 0; i < transition.intervals.size(); ++i)
       views.back().push_back(interval_best_view(counter, scene, transition.transition, transition.intervals[i],
-                                                outcome.energies[t][i].severity_time));
+                                                energies[t][i].severity_time));
   }
   return views;
 }
@@ -261,13 +263,30 @@ int run_check(const CheckOptions& options) {
     fmt::print(stderr, "reconfig: check cancelled (Ctrl+C): no result\n");
     return kExitInterrupted;
   }
-  if (options.energy || options.views) outcome.energies = interval_energies(scene, outcome.transitions);
-  if (options.views) outcome.views = interval_views(scene, outcome);
+  // --report DIR/ (a folder: ends in "/" or exists as one) writes the visual report.
+  const bool visual = !options.report.empty() &&
+                      (options.report.back() == '/' || std::filesystem::is_directory(options.report));
+  // The report needs energies and views too, without printing them unless asked.
+  std::vector<std::vector<resolve::IntervalEnergy>> energies;
+  std::vector<std::vector<render::BestView>> views;
+  if (options.energy || options.views || visual) energies = interval_energies(scene, outcome.transitions);
+  std::optional<render::EglContext> context;  // headless drawing: occlusion queries, pictures
+  if (options.views || visual) {
+    context.emplace();
+    views = interval_views(scene, outcome.transitions, energies);
+  }
+  if (options.energy || options.views) outcome.energies = energies;
+  if (options.views) outcome.views = views;
   const nlohmann::ordered_json json = to_json(scene, outcome);
   if (options.json) fmt::print("{}\n", json.dump(2));
   else fmt::print("{}", text_report(scene, outcome, options.scene));
   if (!options.json_out.empty()) write_file(options.json_out, json.dump(2) + "\n");
-  if (!options.report.empty()) write_file(options.report, markdown_report(scene, outcome, options.scene));
+  if (visual)
+    write_visual_report(options.report, scene,
+                        {options.scene, outcome.method, outcome.transitions, energies, views},
+                        markdown_report(scene, outcome, options.scene));
+  else if (!options.report.empty())
+    write_file(options.report, markdown_report(scene, outcome, options.scene));
   return outcome.any_collision() ? kExitCollisions : kExitOk;
 }
 
@@ -311,7 +330,9 @@ void add_check_command(CLI::App& app, int& exit_code) {
       ->check(CLI::Range(2, 10000000))
       ->capture_default_str();
   command->add_option("--transition", options->transitions, "Only check these transitions (repeatable)");
-  command->add_option("--report", options->report, "Also write a Markdown report to this file");
+  command->add_option("--report", options->report,
+                      "Also write a Markdown report to this file; to a folder (ending in /): a visual HTML report, "
+                      "index.html with pictures of every interval from its best view, and report.md");
   command->add_option("--json-out", options->json_out, "Also write the JSON result to this file");
   command->callback([command, options, &exit_code] {
     if (command->count("--tolerance")) options->given.tolerance = options->tolerance;
