@@ -11,6 +11,7 @@ render::BestView interval_best_view(render::OcclusionCounter& counter, const sce
   request.t1 = interval.t1;
   request.parts = interval.parts;
   request.box = interval.box;
+  request.ground = scene.ground;
   return render::best_view(counter, scene, request);
 }
 

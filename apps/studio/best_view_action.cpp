@@ -20,6 +20,7 @@ view::Camera Studio::best_view_camera(int transition, const collision::Collision
   request.t1 = interval.t1;
   request.parts = interval.parts;
   request.box = interval.box;
+  request.ground = document_->scene().ground;
   request.fov_y = camera_.fov_y;
   view::Camera camera = render::best_view(*occlusion_counter_, document_->scene(), request).camera;
   camera.fit_planes(view::scene_bounds_at(document_->scene(), transition, time));  // the whole design, not just X

@@ -22,8 +22,8 @@ struct OcclusionCount {
 };
 
 /// Needs a current OpenGL 3.3 core context (e.g. `EglContext`) for its whole life, on the
-/// thread that created it. Leaves the framebuffer, viewport and the state it changes as the
-/// renderer expects them (default framebuffer bound).
+/// thread that created it. `count` gives back the framebuffer binding and viewport it found;
+/// the other state it touches (depth, culling, blending) the renderer sets for itself.
 class OcclusionCounter {
  public:
   /// `resolution` × `resolution` pixels per camera (≥ 8).
