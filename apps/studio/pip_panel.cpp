@@ -36,15 +36,27 @@ void PipPanel::update(Studio& studio) {
   if (!snapshot || !studio.document()) return;
   const collision::TransitionSnapshot* current = transition_snapshot(*snapshot, studio.active_transition());
   if (!current || !current->up_to_date || snapshot->version != studio.document()->version()) return;
-  if (snapshot->version == seen_version_) {  // no edit since: remember what is being worked on
-    const int focus = focused_interval(current->intervals, studio.time(), studio.selected_part());
-    worked_on_ = focus >= 0 ? std::optional(current->intervals[focus]) : std::nullopt;
+  if (snapshot->version == seen_version_) {
+    // No edit since: what is worked on is what the designer moved the time or selection to.
+    if (!worked_on_ || studio.time() != focus_time_ || studio.selected_part() != focus_part_) {
+      const int focus = focused_interval(current->intervals, studio.time(), studio.selected_part());
+      worked_on_ = focus >= 0 ? std::optional(current->intervals[focus]) : std::nullopt;
+      focus_time_ = studio.time();
+      focus_part_ = studio.selected_part();
+    }
     return;
   }
   const bool first = seen_version_ == 0;  // the design as opened: nothing was edited yet
   seen_version_ = snapshot->version;
   if (first) return;
-  if (const auto side_effect = most_critical_side_effect(current->changes, worked_on_)) {
+  const std::optional<collision::CollisionInterval> side_effect = most_critical_side_effect(current->changes, worked_on_);
+  if (worked_on_) {  // the edit reshapes the collision worked on: follow it
+    std::optional<collision::CollisionInterval> followed;
+    for (const collision::CollisionInterval& interval : current->intervals)
+      if (same_collision(interval, *worked_on_)) followed = interval;
+    worked_on_ = followed;
+  }
+  if (side_effect) {
     open_on(studio, current->transition, *side_effect);
     return;
   }
@@ -68,6 +80,8 @@ void PipPanel::swap(Studio& studio) {
   studio.camera() = shown.camera;
   studio.select_part(shown.interval.parts.front());
   worked_on_ = shown.interval;
+  focus_time_ = studio.time();
+  focus_part_ = studio.selected_part();
   target_ = main;
   drawn_version_ = 0;
 }

@@ -32,7 +32,8 @@ class PipPanel {
 
   /// Each frame: when a new up-to-date result of the active transition arrived after an edit,
   /// opens on its most critical side effect, or follows the one it shows (closing when it is
-  /// gone). The interval being worked on is the one focused before the edit.
+  /// gone). The interval being worked on is the one focused (side_effects.h) when the time or
+  /// the selection last changed, followed through the edits since.
   void update(Studio& studio);
   /// The window over the viewport's top right corner, when open.
   void draw(Studio& studio);
@@ -54,7 +55,11 @@ class PipPanel {
 
  private:
   std::optional<Target> target_;
-  std::optional<collision::CollisionInterval> worked_on_;  ///< focused before the latest edit
+  /// The collision being worked on: focused where the designer last set the time or selection
+  /// (focus_time_, focus_part_), followed through edits.
+  std::optional<collision::CollisionInterval> worked_on_;
+  double focus_time_ = -1;
+  int focus_part_ = -1;
   std::uint64_t seen_version_ = 0;
   render::RenderTarget image_;
   std::uint64_t drawn_version_ = 0;  ///< design version the image shows (0: must draw)

@@ -9,6 +9,7 @@
 #include "frontend.h"
 #include "keys.h"
 #include "reconfig/render/image.h"
+#include "script.h"
 #include "support/test_data.h"
 
 namespace reconfig::studio {
@@ -113,6 +114,26 @@ TEST_F(StudioPip, AnEditsNewCollisionOpensThePipAtItsSeverityTimeAndAClickSwaps)
   studio().pip().close();
   frontend_->run_frame();
   EXPECT_FALSE(studio().pip().target());
+}
+
+// Nearly the same session as a script: at t = 0.9 the gizmo lifts the slider 1.5 along y (a new
+// key), into the post; the time stays there, on the new collision, yet the one worked on is
+// still slider × block.
+TEST_F(StudioPip, AScriptOpensThePipByAnEditAndSwapsItByAClick) {
+  run_script(*frontend_,
+             "expect-collisions 1\n"
+             "expect-pip none\n"
+             "scrub 0.9\n"
+             "drag-gizmo move-y 1.5\n"
+             "wait-collisions\n"
+             "frames 3\n"
+             "expect-collisions 2\n"
+             "expect-pip slider post\n"
+             "click-pip\n"
+             "expect-selected slider\n"
+             "expect-pip slider block\n",
+             "pip script");
+  EXPECT_THROW(run_script(*frontend_, "expect-pip slider post\n", "wrong pip"), ScriptError);
 }
 
 TEST_F(StudioPip, PressingPOverABandOpensItAndVGlidesToTheBestView) {
