@@ -4,17 +4,21 @@
 #include <tbb/global_control.h>
 
 #include <chrono>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 #include <optional>
 
 #include "command.h"
 #include "interrupt_guard.h"
+#include "interval_view.h"
+#include "visual_report.h"
 #include "progress_bar.h"
 #include "reconfig/collision/detect_collisions.h"
 #include "reconfig/collision/detector_settings.h"
 #include "reconfig/collision/reference_check.h"
 #include "reconfig/common/input_error.h"
 #include "reconfig/common/write_atomically.h"
+#include "reconfig/render/egl_context.h"
 #include "reconfig/resolve/interval_energy.h"
 #include "reconfig/scene/scene_file.h"
 
@@ -34,6 +38,7 @@ struct CheckOptions {
   scene::CollisionSettings given;  ///< which of them were given
   bool all_contacts = false;
   bool energy = false;
+  bool views = false;
   int threads = 0;
   int samples = 1000;
   std::vector<std::string> transitions;
@@ -49,6 +54,8 @@ struct CheckOutcome {
   double seconds = 0;
   /// With --energy: per transition, per interval (same order as `transitions`).
   std::vector<std::vector<resolve::IntervalEnergy>> energies = {};
+  /// With --views: per transition, per interval, its view at the severity time.
+  std::vector<std::vector<render::BestView>> views = {};
 
   bool any_collision() const {
     for (const auto& t : transitions)
@@ -88,6 +95,8 @@ nlohmann::ordered_json to_json(const scene::Reconfigurable& scene, const CheckOu
         intervals.back()["penetration_energy"] = e.penetration_energy;
         intervals.back()["severity_time"] = e.severity_time;
       }
+      if (!outcome.views.empty())
+        intervals.back()["view"] = view_json(outcome.views[t][&ci - transition.intervals.data()]);
     }
     root["transitions"].push_back({{"name", transition.name}, {"intervals", intervals}});
   }
@@ -126,6 +135,12 @@ std::string text_report(const scene::Reconfigurable& scene, const CheckOutcome& 
         const auto& e = outcome.energies[&transition - outcome.transitions.data()][&ci - transition.intervals.data()];
         out += fmt::format("      energy {:.4g} (contour {:.4g}, penetration {:.4g}), most severe at t = {:.3f}\n",
                            e.energy, e.contour_energy, e.penetration_energy, e.severity_time);
+      }
+      if (!outcome.views.empty()) {
+        const auto& v = outcome.views[&transition - outcome.transitions.data()][&ci - transition.intervals.data()];
+        const Eigen::Vector3d eye = v.camera.eye();
+        out += fmt::format("      best seen from ({:.3f}, {:.3f}, {:.3f}), {:.0f} % of its box in sight\n", eye.x(),
+                           eye.y(), eye.z(), 100 * v.pixels.visible_fraction());
       }
     }
   }
@@ -210,6 +225,22 @@ std::vector<std::vector<resolve::IntervalEnergy>> interval_energies(
   return energies;
 }
 
+/// The view of every interval at its severity time (--views). Needs a current OpenGL context.
+std::vector<std::vector<render::BestView>> interval_views(
+    const scene::Reconfigurable& scene, const std::vector<collision::TransitionCollisions>& transitions,
+    const std::vector<std::vector<resolve::IntervalEnergy>>& energies) {
+  render::OcclusionCounter counter;
+  std::vector<std::vector<render::BestView>> views;
+  for (std::size_t t = 0; t < transitions.size(); ++t) {
+    views.emplace_back();
+    const collision::TransitionCollisions& transition = transitions[t];
+    for (std::size_t i = 0; i < transition.intervals.size(); ++i)
+      views.back().push_back(interval_best_view(counter, scene, transition.transition, transition.intervals[i],
+                                                energies[t][i].severity_time));
+  }
+  return views;
+}
+
 int run_check(const CheckOptions& options) {
   std::optional<tbb::global_control> threads;
   if (options.threads > 0) threads.emplace(tbb::global_control::max_allowed_parallelism, options.threads);
@@ -232,12 +263,30 @@ int run_check(const CheckOptions& options) {
     fmt::print(stderr, "reconfig: check cancelled (Ctrl+C): no result\n");
     return kExitInterrupted;
   }
-  if (options.energy) outcome.energies = interval_energies(scene, outcome.transitions);
+  // --report DIR/ (a folder: ends in "/" or exists as one) writes the visual report.
+  const bool visual = !options.report.empty() &&
+                      (options.report.back() == '/' || std::filesystem::is_directory(options.report));
+  // The report needs energies and views too, without printing them unless asked.
+  std::vector<std::vector<resolve::IntervalEnergy>> energies;
+  std::vector<std::vector<render::BestView>> views;
+  if (options.energy || options.views || visual) energies = interval_energies(scene, outcome.transitions);
+  std::optional<render::EglContext> context;  // headless drawing: occlusion queries, pictures
+  if (options.views || visual) {
+    context.emplace();
+    views = interval_views(scene, outcome.transitions, energies);
+  }
+  if (options.energy || options.views) outcome.energies = energies;
+  if (options.views) outcome.views = views;
   const nlohmann::ordered_json json = to_json(scene, outcome);
   if (options.json) fmt::print("{}\n", json.dump(2));
   else fmt::print("{}", text_report(scene, outcome, options.scene));
   if (!options.json_out.empty()) write_file(options.json_out, json.dump(2) + "\n");
-  if (!options.report.empty()) write_file(options.report, markdown_report(scene, outcome, options.scene));
+  if (visual)
+    write_visual_report(options.report, scene,
+                        {options.scene, outcome.method, outcome.transitions, energies, views},
+                        markdown_report(scene, outcome, options.scene));
+  else if (!options.report.empty())
+    write_file(options.report, markdown_report(scene, outcome, options.scene));
   return outcome.any_collision() ? kExitCollisions : kExitOk;
 }
 
@@ -265,6 +314,9 @@ void add_check_command(CLI::App& app, int& exit_code) {
   command->add_flag("--energy", options->energy,
                     "Also give each interval its intersection energy (contour length plus penetration depth, "
                     "integrated over time) and the time it is most severe");
+  command->add_flag("--views", options->views,
+                    "Also give each interval the camera that shows it best at its severity time (occlusion "
+                    "queries over candidate views, drawn headless; implies --energy)");
   command->add_flag("--all-contacts", options->all_contacts,
                     "Engine: find every intersecting triangle pair instead of stopping once the intervals are known "
                     "(same intervals, slower on deep overlaps)");
@@ -278,7 +330,9 @@ void add_check_command(CLI::App& app, int& exit_code) {
       ->check(CLI::Range(2, 10000000))
       ->capture_default_str();
   command->add_option("--transition", options->transitions, "Only check these transitions (repeatable)");
-  command->add_option("--report", options->report, "Also write a Markdown report to this file");
+  command->add_option("--report", options->report,
+                      "Also write a Markdown report to this file; to a folder (ending in /): a visual HTML report, "
+                      "index.html with pictures of every interval from its best view, and report.md");
   command->add_option("--json-out", options->json_out, "Also write the JSON result to this file");
   command->callback([command, options, &exit_code] {
     if (command->count("--tolerance")) options->given.tolerance = options->tolerance;

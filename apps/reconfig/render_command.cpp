@@ -6,14 +6,19 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <sstream>
 
 #include "command.h"
+#include "interval_view.h"
+#include "reconfig/collision/detect_collisions.h"
+#include "reconfig/collision/detector_settings.h"
 #include "reconfig/collision/reference_check.h"
 #include "reconfig/common/input_error.h"
 #include "reconfig/render/egl_context.h"
 #include "reconfig/render/renderer.h"
 #include "reconfig/render/scene_draw_list.h"
+#include "reconfig/resolve/interval_energy.h"
 #include "reconfig/scene/scene_file.h"
 #include "reconfig/view/ghost_sampling.h"
 #include "reconfig/view/saved_camera.h"
@@ -34,6 +39,8 @@ struct RenderOptions {
   int ghosts = 0;
   double ghost_spacing = 0.1;
   bool intervals = false;
+  int interval = -1;
+  bool best_view = false;
   int samples = 200;
   std::string camera;
   std::string size = "1280x720";
@@ -80,6 +87,27 @@ view::Camera render_camera(const scene::Reconfigurable& scene, const std::string
   return camera;
 }
 
+/// Interval K of the transition (the engine's, as `check` lists them): draws it at its severity
+/// time, its box shown and its parts selected.
+collision::CollisionInterval focus_interval(const scene::Reconfigurable& scene, const RenderOptions& options,
+                                            render::SceneDrawRequest& request) {
+  collision::CollisionRequest detect;
+  detect.detector = collision::with_settings({}, scene.collision);
+  detect.transitions = {request.transition};
+  const collision::CollisionResult found = collision::detect_collisions(scene, detect);
+  const std::vector<collision::CollisionInterval>& intervals = found.transitions.front().intervals;
+  if (options.interval >= static_cast<int>(intervals.size()))
+    throw InputError(options.scene, "--interval",
+                     fmt::format("transition \"{}\" has {} collision interval{} (K counts from 0)", options.transition,
+                                 intervals.size(), intervals.size() == 1 ? "" : "s"));
+  const collision::CollisionInterval& ci = intervals[options.interval];
+  resolve::ShapeCache shapes;
+  request.time = resolve::interval_energy(scene, shapes, request.transition, ci).severity_time;
+  request.boxes.push_back(ci.box);
+  if (request.selected.empty()) request.selected = ci.parts;
+  return ci;
+}
+
 int run_render(const RenderOptions& options) {
   const scene::Reconfigurable scene = scene::load_scene(options.scene, options.load);
   render::SceneDrawRequest request;
@@ -95,8 +123,9 @@ int run_render(const RenderOptions& options) {
     if (scene.states.empty()) throw InputError(options.scene, "", "the scene has no state to show");
     request.state = 0;
   }
-  if ((options.ghosts > 0 || options.intervals) && request.transition < 0)
-    throw InputError("", "", "--ghosts and --intervals need --transition NAME --time T");
+  if ((options.ghosts > 0 || options.intervals || options.interval >= 0) && request.transition < 0)
+    throw InputError("", "", "--ghosts, --intervals and --interval need --transition NAME");
+  if (options.best_view && options.interval < 0) throw InputError("", "--best-view", "needs --interval K");
   for (const std::string& name : options.selected) {
     const int part = scene.find_part(name);
     if (part < 0) throw InputError(options.scene, "", fmt::format("no part named \"{}\"", name));
@@ -114,6 +143,8 @@ int run_render(const RenderOptions& options) {
   if (std::filesystem::path(options.output).extension() != ".png")
     throw InputError(options.output, "", "output must end in .png");
 
+  std::optional<collision::CollisionInterval> focus;
+  if (options.interval >= 0) focus = focus_interval(scene, options, request);
   Eigen::AlignedBox3d bounds = request.transition >= 0 ? view::scene_bounds_at(scene, request.transition, request.time)
                                                        : view::scene_bounds_in_state(scene, request.state);
   if (options.ghosts > 0) {
@@ -136,9 +167,12 @@ int run_render(const RenderOptions& options) {
   }
   request.grid = !options.no_grid;
 
-  const view::Camera camera = render_camera(scene, options.camera, bounds, static_cast<double>(width) / height);
-
   render::EglContext context;
+  view::Camera camera = render_camera(scene, options.camera, bounds, static_cast<double>(width) / height);
+  if (options.best_view) {
+    render::OcclusionCounter counter;
+    camera = picture_camera(interval_best_view(counter, scene, request.transition, *focus, request.time), bounds);
+  }
   render::Renderer renderer({.samples = options.msaa});
   const render::DrawList list = render::scene_draw_list(scene, request);
   const auto start = std::chrono::steady_clock::now();
@@ -150,6 +184,7 @@ int run_render(const RenderOptions& options) {
                          : fmt::format("state \"{}\"", scene.states[request.state].name);
   if (!request.ghosts.empty()) what += fmt::format(", {} ghost times", request.ghosts.size());
   if (options.intervals) what += fmt::format(", {} collision interval box{}", shown_intervals, shown_intervals == 1 ? "" : "es");
+  if (focus) what += fmt::format(", interval {} at its severity time{}", options.interval, options.best_view ? ", best view" : "");
   fmt::print("wrote {} ({}×{}, {}; frame {:.0f} ms on {})\n", options.output, width, height, what, milliseconds,
              context.renderer());
   return kExitOk;
@@ -163,7 +198,7 @@ void add_render_command(CLI::App& app, int& exit_code) {
   command->add_option("scene", options->scene, "Scene file (reconfig-scene JSON)")->required();
   add_allow_outside_paths_flag(*command, options->load);
   auto* transition = command->add_option("--transition", options->transition, "Transition name");
-  command->add_option("--time", options->time, "Time in [0, 1]")->check(CLI::Range(0.0, 1.0))->needs(transition);
+  auto* time = command->add_option("--time", options->time, "Time in [0, 1]")->check(CLI::Range(0.0, 1.0))->needs(transition);
   auto* state = command->add_option("--state", options->state, "State name (default: the first state)");
   transition->excludes(state);
   command->add_option("--ghosts", options->ghosts, "Ghosts before and after the time (transparent copies)")
@@ -171,9 +206,19 @@ void add_render_command(CLI::App& app, int& exit_code) {
   command->add_option("--ghost-spacing", options->ghost_spacing, "Time between ghosts")
       ->check(CLI::Range(1e-3, 1.0));
   command->add_flag("--intervals", options->intervals, "Draw the collision interval boxes that overlap the time");
+  auto* interval = command->add_option("--interval", options->interval,
+                                       "Show collision interval K (from 0, as `check` lists them) of the transition at "
+                                       "its severity time, its box drawn and its parts selected")
+                       ->check(CLI::NonNegativeNumber)
+                       ->needs(transition)
+                       ->excludes(time);
+  auto* best = command->add_flag("--best-view", options->best_view,
+                                 "With --interval: look from the view that shows the interval best (occlusion queries)")
+                   ->needs(interval);
   command->add_option("--samples", options->samples, "Time samples of the collision check behind --intervals")
       ->check(CLI::Range(2, 100000));
-  command->add_option("--camera", options->camera, "yaw,pitch[,distance] (degrees, framing all parts; default: the scene's saved view, else its working side)");
+  command->add_option("--camera", options->camera, "yaw,pitch[,distance] (degrees, framing all parts; default: the scene's saved view, else its working side)")
+      ->excludes(best);
   command->add_option("--size", options->size, "Image size WIDTHxHEIGHT (default 1280x720)");
   command->add_option("--select", options->selected, "Part to highlight (repeatable)");
   command->add_flag("--no-grid", options->no_grid, "Leave out the ground grid");

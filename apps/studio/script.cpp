@@ -323,6 +323,21 @@ class Runner {
       for (const auto& word : args) text += (text.empty() ? "" : " ") + word;
       if (studio().status().find(text) == std::string::npos)
         fail(fmt::format("expected the status to say \"{}\", it says \"{}\"", text, studio().status()));
+    } else if (action == "click-pip") {
+      if (!studio().pip().target()) fail("no picture-in-picture is open");
+      const ImVec2 lo = studio().pip().image_min(), hi = studio().pip().image_max();
+      click({(lo.x + hi.x) / 2, (lo.y + hi.y) / 2});
+    } else if (action == "expect-pip") {
+      const auto& target = studio().pip().target();
+      std::string shown = "none";
+      if (target) {
+        shown.clear();
+        for (int part : target->interval.parts) shown += (shown.empty() ? "" : " ") + scene().parts[part].name;
+      }
+      std::string expected;
+      for (const auto& word : args) expected += (expected.empty() ? "" : " ") + word;
+      if (expected.empty()) expected = "none";
+      if (shown != expected) fail(fmt::format("expected the picture-in-picture on {}, it shows {}", expected, shown));
     } else if (action == "screenshot") {
       if (args.empty()) fail("screenshot needs a file");
       frontend_.run_frame();

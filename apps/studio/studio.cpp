@@ -146,6 +146,10 @@ void Studio::frame(std::chrono::steady_clock::time_point now) {
   last_frame_ = now;
   now_ = now;
   seconds_ += dt;
+  if (camera_glide_) {
+    camera_ = camera_glide_->at(seconds_);
+    if (camera_glide_->done(seconds_)) camera_glide_.reset();
+  }
   if (playing_) advance_playback(dt);
   poll_auto_resolve();
   poll_hint();
@@ -155,6 +159,8 @@ void Studio::frame(std::chrono::steady_clock::time_point now) {
   draw_inspector();
   draw_viewport();
   draw_timeline();
+  pip_.update(*this);
+  pip_.draw(*this);
   draw_status_bar();
   draw_modals();
   draw_collision_settings();
@@ -193,6 +199,7 @@ void Studio::handle_shortcuts() {
     if (ImGui::IsKeyPressed(keys::kDelete, false)) delete_selected_key();
     if (ImGui::IsKeyPressed(keys::kF, false)) frame_all();
     if (ImGui::IsKeyPressed(keys::kH, false)) request_hint();
+    if (ImGui::IsKeyPressed(keys::kV, false)) jump_to_best_view();
     if (ImGui::IsKeyPressed(keys::kEscape, false)) select_part(-1);
   }
 }

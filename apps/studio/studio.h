@@ -20,9 +20,12 @@
 #include <string>
 #include <vector>
 
+#include "camera_glide.h"
 #include "document.h"
 #include "gizmo.h"
 #include "handle_drag.h"
+#include "pip_panel.h"
+#include "reconfig/render/occlusion_counter.h"
 #include "reconfig/render/render_target.h"
 #include "reconfig/render/renderer.h"
 #include "reconfig/resolve/auto_resolve.h"
@@ -175,6 +178,22 @@ class Studio {
   /// @return false (the status line says why) with no part selected, bad settings, or a stroke
   ///   the foldover or self-intersection checks refuse
   bool sculpt_selected_part();
+  /// The best view (V, reconfigurables §4.3) of the collision interval being worked on (of the
+  /// selected part, under the current time, else the nearest): the camera glides there, and the
+  /// time moves into the interval when it is outside. @return false when there is none
+  bool jump_to_best_view();
+  /// The camera (this viewport's field of view) that shows `interval` of `transition` best at
+  /// `time`, by occlusion queries (best_view_action.cpp).
+  view::Camera best_view_camera(int transition, const collision::CollisionInterval& interval, double time);
+  /// Draws the design at `time` of `transition` seen by `camera` into `target` (width × height),
+  /// with `boxes`: the picture-in-picture's image.
+  void render_view(render::RenderTarget& target, const view::Camera& camera, int transition, double time,
+                   const std::vector<Eigen::AlignedBox3d>& boxes, int width, int height);
+  /// The camera glides to `camera` (0.4 s).
+  void glide_to(const view::Camera& camera);
+  /// The picture-in-picture panel (pip_panel.h).
+  PipPanel& pip() { return pip_; }
+  const PipPanel& pip() const { return pip_; }
 
   // ---- what the UI shows (for tests and scripts) ----------------------------------------
   int active_transition() const { return active_transition_; }
@@ -289,6 +308,9 @@ class Studio {
   bool viewport_pulsing_ = false;  ///< collision boxes on screen: redraw every frame
   view::Camera camera_;
   bool frame_pending_ = true;
+  std::optional<CameraGlide> camera_glide_;  ///< a flight to a best view in progress
+  std::unique_ptr<render::OcclusionCounter> occlusion_counter_;  ///< made at the first best view
+  PipPanel pip_;
 
   std::vector<int> open_transitions_;
   int active_transition_ = -1;

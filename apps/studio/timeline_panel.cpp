@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "fit_text.h"
+#include "keys.h"
 #include "panel_window.h"
 #include "studio.h"
 
@@ -69,6 +70,8 @@ void Studio::draw_timeline() {
   ImGui::Checkbox("ghosts", &show_ghosts);
   ImGui::SameLine();
   ImGui::Checkbox("collision boxes", &show_intervals);
+  ImGui::SameLine();
+  if (ImGui::Button("Best view (V)")) jump_to_best_view();
   ImGui::SameLine();
   ImGui::TextDisabled("Space play   Left/Right step   I key   Del remove key");
 
@@ -157,9 +160,11 @@ void Studio::draw_timeline() {
       if (std::abs(t_of(io.MousePos.x) - std::clamp(t_of(io.MousePos.x), interval.t0, interval.t1)) < 4.0 / width) {
         std::string parts;
         for (const int part : interval.parts) parts += (parts.empty() ? "" : " × ") + scene.parts[part].name;
-        ImGui::SetTooltip("%s\nt = %.3f to %.3f%s", parts.c_str(), interval.t0, interval.t1,
-                          interval.possible ? "\n(possible: near miss of the proxies)" : "");
+        ImGui::SetTooltip("%s\nt = %.3f to %.3f%s\nP: show it in the picture-in-picture", parts.c_str(),
+                          interval.t0, interval.t1, interval.possible ? "\n(possible: near miss of the proxies)" : "");
+        if (ImGui::IsKeyPressed(keys::kP, false)) pip_.open_on(*this, active_transition_, interval);
       }
+  pip_.draw_timeline_marker(draw, *this);
 
   // Keys of the selected part.
   for (const float y : {translation_y, rotation_y})

@@ -1,7 +1,5 @@
 #include "reconfig/render/renderer.h"
 
-#include "reconfig/render/render_target.h"
-
 #include <epoxy/gl.h>
 
 #include <algorithm>
@@ -12,8 +10,14 @@
 #include <unordered_map>
 #include <vector>
 
+#include "detail/gl_program.h"
+#include "reconfig/render/render_target.h"
+
 namespace reconfig::render {
 namespace {
+
+using detail::check_gl;
+using detail::link_program;
 
 // Lit surfaces. Normals come from screen-space derivatives of the eye-space position: flat
 // shading without duplicating vertices, and always facing the viewer (two-sided).
@@ -71,40 +75,6 @@ out vec4 fragment;
 void main() { fragment = vertex_color; }
 )";
 
-GLuint compile(GLenum type, const char* source) {
-  const GLuint shader = glCreateShader(type);
-  glShaderSource(shader, 1, &source, nullptr);
-  glCompileShader(shader);
-  GLint ok = 0;
-  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-  if (!ok) {
-    char log[2048];
-    glGetShaderInfoLog(shader, sizeof log, nullptr, log);
-    glDeleteShader(shader);
-    throw std::runtime_error(std::string("render: shader compilation failed: ") + log);
-  }
-  return shader;
-}
-
-GLuint link(const char* vertex, const char* fragment) {
-  const GLuint vs = compile(GL_VERTEX_SHADER, vertex), fs = compile(GL_FRAGMENT_SHADER, fragment);
-  const GLuint program = glCreateProgram();
-  glAttachShader(program, vs);
-  glAttachShader(program, fs);
-  glLinkProgram(program);
-  glDeleteShader(vs);
-  glDeleteShader(fs);
-  GLint ok = 0;
-  glGetProgramiv(program, GL_LINK_STATUS, &ok);
-  if (!ok) {
-    char log[2048];
-    glGetProgramInfoLog(program, sizeof log, nullptr, log);
-    glDeleteProgram(program);
-    throw std::runtime_error(std::string("render: shader link failed: ") + log);
-  }
-  return program;
-}
-
 struct ColoredVertex {
   float x, y, z, r, g, b, a;
 };
@@ -134,14 +104,6 @@ void cone_mesh(const Eigen::Vector3d& base, const Eigen::Vector3d& tip, double r
 }
 
 Eigen::Matrix4f to_float(const Eigen::Matrix4d& m) { return m.cast<float>(); }
-
-void check_gl(const char* during) {
-  if (const GLenum error = glGetError(); error != GL_NO_ERROR) {
-    char code[16];
-    std::snprintf(code, sizeof code, "0x%04x", error);
-    throw std::runtime_error(std::string("render: OpenGL error ") + code + " while " + during);
-  }
-}
 
 }  // namespace
 
@@ -177,14 +139,14 @@ struct Renderer::Impl {
 
 Renderer::Renderer(const RendererOptions& options) : impl_(std::make_unique<Impl>()) {
   Impl& r = *impl_;
-  r.surface_program = link(kSurfaceVertex, kSurfaceFragment);
+  r.surface_program = link_program(kSurfaceVertex, kSurfaceFragment);
   r.surface_model = glGetUniformLocation(r.surface_program, "model");
   r.surface_view = glGetUniformLocation(r.surface_program, "view");
   r.surface_projection = glGetUniformLocation(r.surface_program, "projection");
   r.surface_color = glGetUniformLocation(r.surface_program, "color");
   r.surface_opacity = glGetUniformLocation(r.surface_program, "opacity");
   r.surface_highlighted = glGetUniformLocation(r.surface_program, "highlighted");
-  r.flat_program = link(kFlatVertex, kFlatFragment);
+  r.flat_program = link_program(kFlatVertex, kFlatFragment);
   r.flat_view_projection = glGetUniformLocation(r.flat_program, "view_projection");
 
   glGenVertexArrays(1, &r.mesh_vao);

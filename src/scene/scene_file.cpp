@@ -305,7 +305,7 @@ SavedView read_view(const JsonCursor& c) {
 }
 
 Reconfigurable read_scene(const JsonCursor& root, const fs::path& base_dir, const SceneLoadOptions& options) {
-  root.expect_object({"format", "version", "units", "parts", "states", "transitions", "collision", "view"});
+  root.expect_object({"format", "version", "units", "ground", "parts", "states", "transitions", "collision", "view"});
   if (root["format"].as_string() != kFormat)
     root["format"].fail(fmt::format("expected \"{}\"", kFormat));
   const JsonCursor version = root["version"];
@@ -314,6 +314,7 @@ Reconfigurable read_scene(const JsonCursor& root, const fs::path& base_dir, cons
                              reconfig::detail::describe_json(version.value()), kVersion));
   Reconfigurable scene;
   if (root.has("units")) scene.units = root["units"].as_name();
+  if (root.has("ground")) scene.ground = root["ground"].as_bool();
   MeshCache meshes(options);
   const JsonCursor parts = root["parts"];
   for (std::size_t i = 0, n = parts.expect_array(); i < n; ++i)
@@ -442,6 +443,7 @@ std::string scene_to_json(const Reconfigurable& scene, const fs::path& base_dir)
   root["format"] = kFormat;
   root["version"] = kVersion;
   root["units"] = scene.units;
+  if (!scene.ground) root["ground"] = false;
   root["parts"] = ordered_json::array();
   for (const Part& part : scene.parts) root["parts"].push_back(part_json(part, base_dir));
   root["states"] = ordered_json::array();

@@ -120,6 +120,18 @@ TEST(SceneFile, SavedViewRoundTrips) {
   EXPECT_FALSE(json::parse(scene_to_json(parse(valid_scene()), fs::current_path())).contains("view"));
 }
 
+TEST(SceneFile, GroundIsOnUnlessTheFileSaysFloating) {
+  EXPECT_TRUE(parse(valid_scene()).ground);
+  EXPECT_FALSE(json::parse(scene_to_json(parse(valid_scene()), fs::current_path())).contains("ground"));
+  json floating = valid_scene();
+  floating["ground"] = false;
+  const Reconfigurable scene = parse(floating);
+  EXPECT_FALSE(scene.ground);
+  EXPECT_EQ(json::parse(scene_to_json(scene, fs::current_path()))["ground"], false);
+  floating["ground"] = "no";
+  EXPECT_THROW(parse(floating), InputError);
+}
+
 TEST(SceneFile, SaveWritesAtomicallyAndKeepsMeshPathsRelative) {
   const fs::path dir = testing::fresh_temp_dir();
   fs::create_directories(dir / "meshes");

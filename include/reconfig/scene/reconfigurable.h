@@ -26,6 +26,9 @@ struct Reconfigurable {
   CollisionSettings collision;
   /// The camera it was last saved with, if any (not an edit: saving sets it, undo ignores it).
   std::optional<SavedView> view;
+  /// It stands on a ground (a floor under its lowest point): views of its collisions are then
+  /// chosen from above, never from below (render/best_view.h). False for a floating design.
+  bool ground = true;
 
   /// Index of the part / state / transition with that name, or -1.
   int find_part(const std::string& name) const;
