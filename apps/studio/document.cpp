@@ -1,6 +1,7 @@
 #include "document.h"
 
 #include <system_error>
+#include <variant>
 
 #include "reconfig/collision/detector_settings.h"
 #include "reconfig/common/input_error.h"
@@ -24,7 +25,15 @@ std::unique_ptr<Document> Document::open(const fs::path& file, collision::Collis
 std::unique_ptr<Document> Document::recover(const fs::path& file, collision::CollisionServiceOptions options,
                                             const scene::SceneLoadOptions& load) {
   const fs::path autosave = autosave_path(fs::absolute(file));
-  auto document = std::make_unique<Document>(scene::load_scene(autosave, load), fs::absolute(file), options);
+  scene::Reconfigurable scene = scene::load_scene(autosave, load);
+  // Meshes the autosave kept for edited parts are still edits: the next save writes them
+  // beside the design, and discarding the autosave may remove their folder.
+  const fs::path meshes = fs::weakly_canonical(autosave_meshes_path(fs::absolute(file)));
+  for (scene::Part& part : scene.parts)
+    if (const auto* mesh = std::get_if<scene::MeshFile>(&part.source);
+        mesh && fs::weakly_canonical(mesh->path).parent_path() == meshes)
+      part.source = scene::EditedMesh{};
+  auto document = std::make_unique<Document>(std::move(scene), fs::absolute(file), options);
   document->saved_step_.reset();
   return document;
 }
@@ -127,6 +136,7 @@ void Document::discard_autosave() {
   autosave_pending_ = false;
   std::error_code ignored;
   fs::remove(autosave_path(file_), ignored);
+  fs::remove_all(autosave_meshes_path(file_), ignored);
 }
 
 std::string Document::autosave_if_due(Clock::time_point now, std::chrono::milliseconds interval) {
@@ -135,7 +145,10 @@ std::string Document::autosave_if_due(Clock::time_point now, std::chrono::millis
   last_autosave_ = now;
   autosave_pending_ = false;
   try {
-    const std::string json = scene::scene_to_json(*scene_, file_.parent_path());
+    // Edited parts have no mesh file yet: the autosave keeps theirs in its own folder.
+    scene::Reconfigurable saved = *scene_;
+    scene::write_edited_meshes(saved, autosave_meshes_path(file_));
+    const std::string json = scene::scene_to_json(saved, file_.parent_path());
     write_atomically(autosave_path(file_), [&](std::ostream& out) { out << json; });
   } catch (const std::exception& error) {
     return std::string("autosave failed: ") + error.what();
@@ -147,6 +160,10 @@ fs::path Document::autosave_path(const fs::path& file) {
   // Appended, not `"." + …`: GCC 12 warns (-Wrestrict) about the insertion at the front that
   // `const char* + std::string&&` may do, a false positive (GCC bug 105651).
   return file.parent_path() / std::string(".").append(file.filename().string()).append(".autosave");
+}
+
+fs::path Document::autosave_meshes_path(const fs::path& file) {
+  return file.parent_path() / std::string(".").append(file.filename().string()).append(".autosave-meshes");
 }
 
 bool Document::has_recovery(const fs::path& file) {

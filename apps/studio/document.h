@@ -72,10 +72,13 @@ class Document {
   /// Where the autosave of `file` lives: a hidden file next to it (so relative mesh paths
   /// stay valid), e.g. `dir/.scene.json.autosave`.
   static std::filesystem::path autosave_path(const std::filesystem::path& file);
+  /// Where the autosave keeps the meshes of parts edited since the last save (sculpted, for
+  /// example), which have no file yet: `dir/.scene.json.autosave-meshes/<part>.obj`.
+  static std::filesystem::path autosave_meshes_path(const std::filesystem::path& file);
   /// Whether `file` has an autosave newer than itself (unsaved work from a crash).
   static bool has_recovery(const std::filesystem::path& file);
-  /// Throws the unsaved edits away for good (closing with Discard): removes the autosave, so
-  /// that the next open does not offer to recover them.
+  /// Throws the unsaved edits away for good (closing with Discard): removes the autosave and
+  /// its meshes, so that the next open does not offer to recover them.
   void discard_autosave();
 
   /// The parts' rest meshes as shared objects (for drawing them GPU-resident): replaced only

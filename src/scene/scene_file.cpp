@@ -474,18 +474,22 @@ std::string scene_to_json(const Reconfigurable& scene, const fs::path& base_dir)
   return root.dump(2) + "\n";
 }
 
-void save_scene(Reconfigurable& scene, const fs::path& file) {
-  const fs::path base_dir = fs::absolute(file).parent_path();
+void write_edited_meshes(Reconfigurable& scene, const fs::path& mesh_dir) {
   for (Part& part : scene.parts) {
     if (!std::holds_alternative<EditedMesh>(part.source)) continue;
     std::string stem = part.name;
     for (char& ch : stem)
       if (!std::isalnum(static_cast<unsigned char>(ch)) && ch != '-' && ch != '_') ch = '_';
-    const fs::path mesh_file = base_dir / "meshes" / (stem + ".obj");
-    fs::create_directories(mesh_file.parent_path());
+    const fs::path mesh_file = mesh_dir / (stem + ".obj");
+    fs::create_directories(mesh_dir);
     geometry::save_obj(mesh_file, part.mesh);
     part.source = MeshFile{mesh_file};
   }
+}
+
+void save_scene(Reconfigurable& scene, const fs::path& file) {
+  const fs::path base_dir = fs::absolute(file).parent_path();
+  write_edited_meshes(scene, base_dir / "meshes");
   const std::string text = scene_to_json(scene, base_dir);
   write_atomically(file, [&](std::ostream& out) { out << text; });
 }

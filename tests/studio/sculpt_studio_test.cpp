@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <variant>
 
 #include "script.h"
 #include "studio_test_util.h"
@@ -62,6 +63,33 @@ TEST_F(StudioSculpt, PushingTheArmrestsBackFreesUnfoldAndUndoBringsTheCollisions
   // Saving writes the sculpted mesh beside the design.
   studio().document()->save();
   EXPECT_TRUE(std::filesystem::exists(studio().document()->file().parent_path() / "meshes" / "armrest_left.obj"));
+}
+
+TEST_F(StudioSculpt, TheAutosaveKeepsSculptedMeshesAndRecoversThem) {
+  const int armrest = studio().document()->scene().find_part("armrest_left");
+  studio().select_part(armrest);
+  Studio::SculptSettings& settings = studio().sculpt_settings();
+  settings.shape = 1;
+  settings.size = Eigen::Vector3d::Constant(0.2);
+  settings.center = {0, -0.25, 0};
+  settings.coating = 0.08;
+  settings.translation = {0, 0.14, 0};
+  ASSERT_TRUE(studio().sculpt_selected_part()) << studio().status();
+  const geometry::Mesh sculpted = studio().document()->scene().parts[armrest].mesh;
+  const std::filesystem::path file = studio().document()->file();
+  ASSERT_EQ(studio().document()->autosave_if_due(Document::Clock::now(), milliseconds(0)), "");
+  ASSERT_TRUE(Document::has_recovery(file));
+  // After a crash: the recovered design has the sculpted mesh, still as an edit (the next save
+  // writes it beside the design, not into the autosave's folder).
+  const auto recovered = Document::recover(file, {});
+  const scene::Part& part = recovered->scene().parts[armrest];
+  EXPECT_TRUE(std::holds_alternative<scene::EditedMesh>(part.source));
+  EXPECT_EQ(part.mesh.V, sculpted.V);
+  EXPECT_EQ(part.mesh.F, sculpted.F);
+  // Discarding removes the autosave and its meshes.
+  studio().document()->discard_autosave();
+  EXPECT_FALSE(Document::has_recovery(file));
+  EXPECT_FALSE(std::filesystem::exists(Document::autosave_meshes_path(file)));
 }
 
 TEST_F(StudioSculpt, BadSettingsAndNoSelectionAreRefusedWithAReason) {

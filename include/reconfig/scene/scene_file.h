@@ -33,9 +33,15 @@ Reconfigurable parse_scene(const std::string& json_text, const std::filesystem::
 /// The scene as JSON text (2-space indented). Mesh paths are written relative to `base_dir`.
 std::string scene_to_json(const Reconfigurable& scene, const std::filesystem::path& base_dir);
 
+/// Writes the mesh of every part whose geometry was edited in the tool (`EditedMesh`) as an OBJ
+/// file `<mesh_dir>/<part name>.obj` (characters other than letters, digits, '-' and '_' become
+/// '_'), and makes those parts `MeshFile` parts of `scene`.
+/// @throws InputError if a file cannot be written
+void write_edited_meshes(Reconfigurable& scene, const std::filesystem::path& mesh_dir);
+
 /// Writes the scene atomically (temporary file, then rename): a crash never leaves a half
 /// file. Parts whose geometry was edited in the tool (`EditedMesh`) are written as OBJ files
-/// under `meshes/` next to the scene and become `MeshFile` parts.
+/// under `meshes/` next to the scene and become `MeshFile` parts (`write_edited_meshes`).
 /// @throws InputError if the file cannot be written
 void save_scene(Reconfigurable& scene, const std::filesystem::path& file);
 
