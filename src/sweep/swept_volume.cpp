@@ -1,0 +1,296 @@
+// The only file of the sweep module that includes OpenVDB (its headers are heavy).
+#include "reconfig/sweep/swept_volume.h"
+
+#include <openvdb/openvdb.h>
+#include <openvdb/tools/MeshToVolume.h>
+#include <openvdb/tools/VolumeToMesh.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <limits>
+#include <mutex>
+
+#include "reconfig/geometry/bounding_box.h"
+#include "reconfig/geometry/mass_properties.h"
+#include "sweep/detail/outer_shells.h"
+
+namespace reconfig::sweep {
+namespace {
+
+using openvdb::Coord;
+using openvdb::FloatGrid;
+using openvdb::FloatTree;
+
+constexpr int kLeafDim = 8;  // FloatTree::LeafNodeType::DIM
+const double kSqrt3 = std::sqrt(3.0);
+
+void initialize_openvdb() {
+  static std::once_flag once;
+  std::call_once(once, [] { openvdb::initialize(); });
+}
+
+/// B's signed distance on a narrow band of `band` voxels each side, in B's frame, step h.
+FloatGrid::Ptr part_distance_grid(const geometry::Mesh& part, double h, double band) {
+  std::vector<openvdb::Vec3s> points(part.V.rows());
+  for (int i = 0; i < part.V.rows(); ++i)
+    points[i] = openvdb::Vec3s(float(part.V(i, 0)), float(part.V(i, 1)), float(part.V(i, 2)));
+  std::vector<openvdb::Vec3I> triangles(part.F.rows());
+  for (int f = 0; f < part.F.rows(); ++f)
+    triangles[f] = openvdb::Vec3I(part.F(f, 0), part.F(f, 1), part.F(f, 2));
+  const auto transform = openvdb::math::Transform::createLinearTransform(h);
+  return openvdb::tools::meshToSignedDistanceField<FloatGrid>(*transform, points, triangles, {}, float(band),
+                                                               float(band));
+}
+
+/// The maps from the swept grid's index space to B's index space (same step h), one per sample.
+struct IndexMap {
+  Eigen::Matrix3d linear;
+  Eigen::Vector3d offset;
+  Eigen::Vector3d apply(const Eigen::Vector3d& x) const { return linear * x + offset; }
+};
+
+std::vector<IndexMap> index_maps(const RelativeMotion& motion, const std::vector<double>& times, double h) {
+  std::vector<IndexMap> maps;
+  for (double t : times) {
+    const Eigen::Isometry3d inverse = motion.at(t).inverse();
+    maps.push_back({inverse.linear(), inverse.translation() / h});
+  }
+  return maps;
+}
+
+/// Box (world, A's frame) holding B at every sample, padded by `pad`.
+Eigen::AlignedBox3d swept_box(const geometry::Mesh& part, const RelativeMotion& motion, const std::vector<double>& times,
+                              double pad) {
+  const Eigen::AlignedBox3d rest(part.V.colwise().minCoeff().transpose(), part.V.colwise().maxCoeff().transpose());
+  Eigen::AlignedBox3d box;
+  for (double t : times) {
+    const Eigen::Isometry3d g = motion.at(t);
+    for (int c = 0; c < 8; ++c) box.extend(g * rest.corner(static_cast<Eigen::AlignedBox3d::CornerType>(c)));
+  }
+  box.min().array() -= pad;
+  box.max().array() += pad;
+  return box;
+}
+
+/// B's distance grid copied into a dense array over its active voxels' box (the lookups of
+/// the sweep are then a few nanoseconds each). Beyond the band (|φ| >= b, the grid's
+/// background) a look-up gives −b inside, and outside the larger of b and the distance to
+/// B's bounding sphere: both lower bounds of |φ| there.
+class DenseDistance {
+ public:
+  /// @param center, radius  B's bounding sphere, in index space and world units
+  DenseDistance(const FloatGrid& grid, const Eigen::Vector3d& center, double radius, double h)
+      : background_(grid.background()), center_(center), radius_(radius), h_(h) {
+    const openvdb::CoordBBox box = grid.evalActiveVoxelBoundingBox();
+    lo_ = Eigen::Vector3i(box.min().x(), box.min().y(), box.min().z());
+    const openvdb::Coord dim = box.dim();
+    size_ = Eigen::Vector3i(dim.x(), dim.y(), dim.z());
+    values_.resize(std::size_t(size_.prod()));
+    tbb::parallel_for(0, size_.x(), [&](int i) {
+      auto accessor = grid.getConstAccessor();
+      for (int j = 0; j < size_.y(); ++j)
+        for (int k = 0; k < size_.z(); ++k)
+          values_[index(i, j, k)] = accessor.getValue(Coord(lo_.x() + i, lo_.y() + j, lo_.z() + k));
+    });
+  }
+
+  /// The value at the voxel nearest to index-space point x.
+  float nearest(const Eigen::Vector3d& x) const {
+    const int i = int(std::floor(x.x() + 0.5)) - lo_.x(), j = int(std::floor(x.y() + 0.5)) - lo_.y(),
+              k = int(std::floor(x.z() + 0.5)) - lo_.z();
+    const bool in_box =
+        unsigned(i) < unsigned(size_.x()) && unsigned(j) < unsigned(size_.y()) && unsigned(k) < unsigned(size_.z());
+    const float value = in_box ? values_[index(i, j, k)] : background_;
+    if (value < background_) return value;
+    return std::max(value, float((x - center_).norm() * h_ - radius_));
+  }
+
+ private:
+  std::size_t index(int i, int j, int k) const { return (std::size_t(i) * size_.y() + j) * size_.z() + k; }
+  float background_;
+  Eigen::Vector3d center_;
+  double radius_, h_;
+  Eigen::Vector3i lo_, size_;
+  std::vector<float> values_;
+};
+
+/// What one leaf of the swept grid turned out to be.
+struct LeafResult {
+  enum Kind { kOutside, kInside, kBand } kind = kOutside;
+  std::unique_ptr<FloatTree::LeafNodeType> leaf;
+  int voxels = 0;
+};
+
+/// The evaluation of the swept field F − ℓ on one leaf (values clamped to [−W, W]), by
+/// recursive subdivision of the leaf into blocks of 4³, 2³ and single voxels. A block of n³
+/// voxels around center c: every voxel x has φ̃_k(x) >= φ̃_k(c) − s_n with s_n = the block's
+/// half diagonal + 2e (φ is 1-Lipschitz, a look-up is within e of it), so with
+/// m = min_k φ̃_k(c): the block is inside when m + s_n < ℓ − W, outside when m − s_n > ℓ + W, and
+/// otherwise only the samples with φ̃_k(c) − s_n < min(m + s_n, ℓ + W) can set a voxel's minimum.
+class LeafEvaluator {
+ public:
+  LeafEvaluator(const DenseDistance& part_grid, const std::vector<IndexMap>& maps, double h, double level, double band,
+                double lookup_error)
+      : part_grid_(part_grid), maps_(maps), h_(h), level_(level), band_(band), lookup_error_(lookup_error) {}
+
+  LeafResult evaluate(const Coord& origin) const {
+    std::vector<int> all(maps_.size());
+    for (std::size_t k = 0; k < all.size(); ++k) all[k] = static_cast<int>(k);
+    std::vector<float> values(FloatTree::LeafNodeType::SIZE, float(band_));  // F − ℓ, x-major
+    const Eigen::Vector3d leaf_origin(origin.x(), origin.y(), origin.z());
+    const Kind kind = refine(leaf_origin, Eigen::Vector3i::Zero(), kLeafDim, all, values);
+    if (kind == kInsideBlock) return {LeafResult::kInside, nullptr, 0};
+    if (kind == kOutsideBlock) return {};
+    auto leaf = std::make_unique<FloatTree::LeafNodeType>(origin, float(band_), false);
+    for (openvdb::Index n = 0; n < FloatTree::LeafNodeType::SIZE; ++n) leaf->setValueOn(n, values[n]);
+    return {LeafResult::kBand, std::move(leaf), FloatTree::LeafNodeType::SIZE};
+  }
+
+ private:
+  enum Kind { kInsideBlock, kOutsideBlock, kMixedBlock };
+
+  /// Fills the n³ block at `local` (voxel offset in the leaf) of `values`; says what it was.
+  Kind refine(const Eigen::Vector3d& leaf_origin, const Eigen::Vector3i& local, int n, const std::vector<int>& candidates,
+              std::vector<float>& values) const {
+    const Eigen::Vector3d center = leaf_origin + local.cast<double>() + Eigen::Vector3d::Constant(0.5 * (n - 1));
+    std::vector<float> at_center(candidates.size());
+    float m = std::numeric_limits<float>::infinity();
+    for (std::size_t c = 0; c < candidates.size(); ++c) {
+      at_center[c] = part_grid_.nearest(maps_[candidates[c]].apply(center));
+      m = std::min(m, at_center[c]);
+    }
+    if (n == 1) {
+      values[(local.x() << 6) | (local.y() << 3) | local.z()] = float(std::clamp(m - level_, -band_, band_));
+      return kMixedBlock;
+    }
+    const double slack = 0.5 * (n - 1) * kSqrt3 * h_ + 2 * lookup_error_;
+    if (m + slack < level_ - band_) {
+      fill(local, n, float(-band_), values);
+      return kInsideBlock;
+    }
+    if (m - slack > level_ + band_) return kOutsideBlock;  // values stay +W
+    const double keep_below = std::min(m + slack, level_ + band_) + slack;
+    std::vector<int> kept;
+    for (std::size_t c = 0; c < candidates.size(); ++c)
+      if (at_center[c] < keep_below) kept.push_back(candidates[c]);
+    const int half = n / 2;
+    int inside = 0, outside = 0;
+    for (int child = 0; child < 8; ++child) {
+      const Eigen::Vector3i offset(child >> 2, (child >> 1) & 1, child & 1);
+      const Kind kind = refine(leaf_origin, local + half * offset, half, kept, values);
+      inside += kind == kInsideBlock;
+      outside += kind == kOutsideBlock;
+    }
+    return inside == 8 ? kInsideBlock : outside == 8 ? kOutsideBlock : kMixedBlock;
+  }
+
+  static void fill(const Eigen::Vector3i& local, int n, float value, std::vector<float>& values) {
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j)
+        for (int l = 0; l < n; ++l) values[((local.x() + i) << 6) | ((local.y() + j) << 3) | (local.z() + l)] = value;
+  }
+
+  const DenseDistance& part_grid_;
+  const std::vector<IndexMap>& maps_;
+  double h_, level_, band_, lookup_error_;
+};
+
+geometry::Mesh mesh_from_vdb(const std::vector<openvdb::Vec3s>& points, const std::vector<openvdb::Vec3I>& triangles,
+                             const std::vector<openvdb::Vec4I>& quads) {
+  geometry::Mesh mesh;
+  mesh.V.resize(static_cast<Eigen::Index>(points.size()), 3);
+  for (std::size_t i = 0; i < points.size(); ++i) mesh.V.row(i) << points[i].x(), points[i].y(), points[i].z();
+  mesh.F.resize(static_cast<Eigen::Index>(triangles.size() + 2 * quads.size()), 3);
+  Eigen::Index f = 0;
+  for (const auto& t : triangles) mesh.F.row(f++) << int(t[0]), int(t[1]), int(t[2]);
+  for (const auto& q : quads) {
+    mesh.F.row(f++) << int(q[0]), int(q[1]), int(q[2]);
+    mesh.F.row(f++) << int(q[0]), int(q[2]), int(q[3]);
+  }
+  if (geometry::mass_properties(mesh).volume < 0) mesh.F.col(1).swap(mesh.F.col(2));
+  return mesh;
+}
+
+}  // namespace
+
+SweptVolumeResult swept_volume(const geometry::Mesh& part, const RelativeMotion& motion,
+                               const SweptVolumeRequest& request) {
+  SweptVolumeResult result;
+  if (part.empty()) return result;
+  initialize_openvdb();
+  // h: given, or 1/128 of the longest side of the box swept by B's box (coarse samples).
+  double h = request.grid_step;
+  if (h <= 0) {
+    double unused = 0;
+    const double size = part.V.colwise().maxCoeff().maxCoeff() - part.V.colwise().minCoeff().minCoeff();
+    const Eigen::AlignedBox3d coarse = swept_box(part, motion, motion.time_samples(0.05 * size, unused), 2 * request.offset);
+    h = coarse.sizes().maxCoeff() / 128;
+  }
+  result.grid_step = h;
+  const std::vector<double> times = motion.time_samples(request.time_fraction * h, result.motion_error);
+  result.time_samples = static_cast<int>(times.size());
+  const double lookup_error = 0.5 * kSqrt3 * h;
+  result.level = request.offset + result.motion_error + lookup_error + kSqrt3 * h;
+  result.margin = result.level - request.offset;
+  const double band = 1.5 * h;  // |F − ℓ| is stored up to this, beyond it only the side matters
+  // Beyond ℓ + W + (the slack of a 2³ block) a look-up only needs to be a lower bound.
+  const double part_band_voxels = std::ceil((result.level + band + 0.5 * kSqrt3 * h + 2 * lookup_error) / h) + 2;
+
+  if (!report_progress(request.progress, 0.0)) return result.cancelled = true, result;
+  const FloatGrid::Ptr part_grid = part_distance_grid(part, h, part_band_voxels);
+  if (!report_progress(request.progress, 0.1)) return result.cancelled = true, result;
+
+  const Eigen::AlignedBox3d box = swept_box(part, motion, times, result.level + result.motion_error + band + 2 * h);
+  const Eigen::Vector3i lo = (box.min() / h).array().floor().cast<int>();
+  const Eigen::Vector3i hi = (box.max() / h).array().ceil().cast<int>();
+  result.grid_size = {hi.x() - lo.x(), hi.y() - lo.y(), hi.z() - lo.z()};
+  std::vector<Coord> origins;
+  const auto leaf_floor = [](int v) { return v >= 0 ? v / kLeafDim * kLeafDim : -((-v + kLeafDim - 1) / kLeafDim) * kLeafDim; };
+  for (int x = leaf_floor(lo.x()); x <= hi.x(); x += kLeafDim)
+    for (int y = leaf_floor(lo.y()); y <= hi.y(); y += kLeafDim)
+      for (int z = leaf_floor(lo.z()); z <= hi.z(); z += kLeafDim) origins.emplace_back(x, y, z);
+
+  const std::vector<IndexMap> maps = index_maps(motion, times, h);
+  const Eigen::Vector3d part_center = 0.5 * (part.V.colwise().minCoeff() + part.V.colwise().maxCoeff()).transpose();
+  const double part_radius = (part.V.rowwise() - part_center.transpose()).rowwise().norm().maxCoeff();
+  const DenseDistance dense(*part_grid, part_center / h, part_radius, h);
+  const LeafEvaluator evaluator(dense, maps, h, result.level, band, lookup_error);
+  std::vector<LeafResult> leaves(origins.size());
+  std::atomic<bool> cancelled{false};
+  std::atomic<std::size_t> done{0};
+  std::mutex progress_mutex;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, origins.size(), 16), [&](const tbb::blocked_range<std::size_t>& range) {
+    if (cancelled) return;
+    for (std::size_t n = range.begin(); n != range.end(); ++n) leaves[n] = evaluator.evaluate(origins[n]);
+    const double fraction = double(done += range.size()) / double(origins.size());
+    std::lock_guard lock(progress_mutex);
+    if (!report_progress(request.progress, 0.1 + 0.8 * fraction)) cancelled = true;
+  });
+  if (cancelled) return result.cancelled = true, result;
+
+  FloatGrid::Ptr swept = FloatGrid::create(float(band));
+  swept->setTransform(openvdb::math::Transform::createLinearTransform(h));
+  swept->setGridClass(openvdb::GRID_LEVEL_SET);
+  FloatTree& tree = swept->tree();
+  for (std::size_t n = 0; n < leaves.size(); ++n) {
+    if (leaves[n].kind == LeafResult::kInside) tree.addTile(1, origins[n], float(-band), false);
+    if (leaves[n].kind != LeafResult::kBand) continue;
+    result.active_voxels += leaves[n].voxels;
+    tree.addLeaf(leaves[n].leaf.release());
+  }
+  std::vector<openvdb::Vec3s> points;
+  std::vector<openvdb::Vec3I> triangles;
+  std::vector<openvdb::Vec4I> quads;
+  openvdb::tools::volumeToMesh(*swept, points, triangles, quads, 0.0, 0.0);
+  result.mesh = detail::outer_shells(mesh_from_vdb(points, triangles, quads), result.filled_cavities);
+  if (!report_progress(request.progress, 1.0)) {
+    result.mesh = {};
+    result.cancelled = true;
+  }
+  return result;
+}
+
+}  // namespace reconfig::sweep
