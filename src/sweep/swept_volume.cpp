@@ -226,8 +226,9 @@ SweptVolumeResult swept_volume(const geometry::Mesh& part, const RelativeMotion&
   if (h <= 0) {
     double unused = 0;
     const double size = part.V.colwise().maxCoeff().maxCoeff() - part.V.colwise().minCoeff().minCoeff();
-    const Eigen::AlignedBox3d coarse = swept_box(part, motion, motion.time_samples(0.05 * size, unused), 2 * request.offset);
-    h = coarse.sizes().maxCoeff() / 128;
+    Eigen::AlignedBox3d coarse = swept_box(part, motion, motion.time_samples(0.05 * size, unused), 2 * request.offset);
+    if (request.clip) coarse = coarse.intersection(*request.clip);
+    h = std::max(coarse.sizes().maxCoeff(), 1e-3 * size) / 128;
   }
   result.grid_step = h;
   const std::vector<double> times = motion.time_samples(request.time_fraction * h, result.motion_error);
@@ -243,15 +244,31 @@ SweptVolumeResult swept_volume(const geometry::Mesh& part, const RelativeMotion&
   const FloatGrid::Ptr part_grid = part_distance_grid(part, h, part_band_voxels);
   if (!report_progress(request.progress, 0.1)) return result.cancelled = true, result;
 
-  const Eigen::AlignedBox3d box = swept_box(part, motion, times, result.level + result.motion_error + band + 2 * h);
+  Eigen::AlignedBox3d box = swept_box(part, motion, times, result.level + result.motion_error + band + 2 * h);
+  if (request.clip) {
+    Eigen::AlignedBox3d clip = *request.clip;
+    clip.min().array() -= 2 * h;
+    clip.max().array() += 2 * h;
+    box = box.intersection(clip);
+    if (box.isEmpty()) return result;
+  }
   const Eigen::Vector3i lo = (box.min() / h).array().floor().cast<int>();
   const Eigen::Vector3i hi = (box.max() / h).array().ceil().cast<int>();
   result.grid_size = {hi.x() - lo.x(), hi.y() - lo.y(), hi.z() - lo.z()};
-  std::vector<Coord> origins;
+  // The leaves over the box, and a ring of outside leaves around them: volumeToMesh looks for
+  // sign changes from a leaf's voxels towards +x, +y, +z only, so a surface reaching the box's
+  // faces (clipped) closes only against a leaf.
+  std::vector<Coord> origins, ring;
   const auto leaf_floor = [](int v) { return v >= 0 ? v / kLeafDim * kLeafDim : -((-v + kLeafDim - 1) / kLeafDim) * kLeafDim; };
-  for (int x = leaf_floor(lo.x()); x <= hi.x(); x += kLeafDim)
-    for (int y = leaf_floor(lo.y()); y <= hi.y(); y += kLeafDim)
-      for (int z = leaf_floor(lo.z()); z <= hi.z(); z += kLeafDim) origins.emplace_back(x, y, z);
+  const Eigen::Vector3i first(leaf_floor(lo.x()), leaf_floor(lo.y()), leaf_floor(lo.z()));
+  const Eigen::Vector3i last(leaf_floor(hi.x()), leaf_floor(hi.y()), leaf_floor(hi.z()));
+  for (int x = first.x() - kLeafDim; x <= last.x() + kLeafDim; x += kLeafDim)
+    for (int y = first.y() - kLeafDim; y <= last.y() + kLeafDim; y += kLeafDim)
+      for (int z = first.z() - kLeafDim; z <= last.z() + kLeafDim; z += kLeafDim) {
+        const bool inner = x >= first.x() && x <= last.x() && y >= first.y() && y <= last.y() && z >= first.z() &&
+                           z <= last.z();
+        (inner ? origins : ring).emplace_back(x, y, z);
+      }
 
   const std::vector<IndexMap> maps = index_maps(motion, times, h);
   const Eigen::Vector3d part_center = 0.5 * (part.V.colwise().minCoeff() + part.V.colwise().maxCoeff()).transpose();
@@ -276,11 +293,14 @@ SweptVolumeResult swept_volume(const geometry::Mesh& part, const RelativeMotion&
   swept->setGridClass(openvdb::GRID_LEVEL_SET);
   FloatTree& tree = swept->tree();
   for (std::size_t n = 0; n < leaves.size(); ++n) {
-    if (leaves[n].kind == LeafResult::kInside) tree.addTile(1, origins[n], float(-band), false);
+    // Inside: a leaf of active −W voxels rather than a tile, so that the surface is also found
+    // where the inside meets the background (volumeToMesh looks from active voxels only).
+    if (leaves[n].kind == LeafResult::kInside) tree.addLeaf(new FloatTree::LeafNodeType(origins[n], float(-band), true));
     if (leaves[n].kind != LeafResult::kBand) continue;
     result.active_voxels += leaves[n].voxels;
     tree.addLeaf(leaves[n].leaf.release());
   }
+  for (const Coord& origin : ring) tree.addLeaf(new FloatTree::LeafNodeType(origin, float(band), true));
   std::vector<openvdb::Vec3s> points;
   std::vector<openvdb::Vec3I> triangles;
   std::vector<openvdb::Vec4I> quads;

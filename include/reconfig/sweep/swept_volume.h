@@ -3,6 +3,9 @@
 /// The ε-offset of the volume a moving part sweeps, as a closed triangle mesh contoured from a
 /// conservative swept signed distance on a sparse grid (reconfigurables §6.7, eq. 5–6).
 
+#include <Eigen/Geometry>
+
+#include <optional>
 #include <vector>
 
 #include "reconfig/common/progress.h"
@@ -18,12 +21,16 @@ struct SweptVolumeRequest {
   double offset = 0;
   /// No point of the part moves more than `time_fraction` · h between two time samples.
   double time_fraction = 0.5;
+  /// Only the sweep inside this box (in the motion's target frame) is wanted, as when carving a
+  /// part: the grid covers the box grown by 2h, and the mesh closes a little outside it.
+  std::optional<Eigen::AlignedBox3d> clip = std::nullopt;
   /// Fraction in [0, 1]; return false to cancel (the result then says `cancelled`).
   ProgressCallback progress;
 };
 
 struct SweptVolumeResult {
-  /// The contoured surface, closed and outward (empty when cancelled or the part is empty).
+  /// The contoured surface, closed and outward (empty when cancelled, when the part is empty or
+  /// when the sweep misses `clip`).
   geometry::Mesh mesh;
   double grid_step = 0;   ///< h used
   int time_samples = 0;   ///< number of poses of the part sampled
