@@ -36,6 +36,7 @@ struct SweepOptions {
   double offset = 0.0;
   std::string output;
   bool json = false;
+  bool stl = false;  // carve: also write the carved mesh as STL, for printing
 };
 
 int find_part(const scene::Reconfigurable& scene, const std::string& name, const std::string& file) {
@@ -179,6 +180,7 @@ int run_carve(const SweepOptions& options) {
   const fs::path mesh_file = fs::absolute(options.output).parent_path() / "meshes" / (stem + "-carved.obj");
   fs::create_directories(mesh_file.parent_path());
   geometry::save_obj(mesh_file, carved.mesh);
+  if (options.stl) geometry::save_stl(fs::path(mesh_file).replace_extension(".stl"), carved.mesh);
   part.source = scene::MeshFile{mesh_file};
   scene::save_scene(result, options.output);
   const std::vector<collision::CollisionInterval> left =
@@ -257,6 +259,7 @@ void add_carve_command(CLI::App& app, int& exit_code) {
   command->add_option("--part", options->part, "The part carved")->required();
   command->add_option("--by", options->carvers, "The carving parts (comma-separated)")->required()->delimiter(',');
   command->add_option("-o,--output", options->output, "Where to write the carved design (.json)")->required();
+  command->add_flag("--stl", options->stl, "Also write the carved mesh as a binary STL beside its OBJ (for printing)");
   command->callback([options, &exit_code] { exit_code = run_carve(*options); });
 }
 
