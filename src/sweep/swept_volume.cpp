@@ -2,7 +2,6 @@
 #include "reconfig/sweep/swept_volume.h"
 
 #include <openvdb/openvdb.h>
-#include <openvdb/tools/MeshToVolume.h>
 #include <openvdb/tools/VolumeToMesh.h>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -16,6 +15,7 @@
 #include "reconfig/geometry/bounding_box.h"
 #include "reconfig/geometry/mass_properties.h"
 #include "sweep/detail/outer_shells.h"
+#include "sweep/detail/part_distance.h"
 
 namespace reconfig::sweep {
 namespace {
@@ -30,19 +30,6 @@ const double kSqrt3 = std::sqrt(3.0);
 void initialize_openvdb() {
   static std::once_flag once;
   std::call_once(once, [] { openvdb::initialize(); });
-}
-
-/// B's signed distance on a narrow band of `band` voxels each side, in B's frame, step h.
-FloatGrid::Ptr part_distance_grid(const geometry::Mesh& part, double h, double band) {
-  std::vector<openvdb::Vec3s> points(part.V.rows());
-  for (int i = 0; i < part.V.rows(); ++i)
-    points[i] = openvdb::Vec3s(float(part.V(i, 0)), float(part.V(i, 1)), float(part.V(i, 2)));
-  std::vector<openvdb::Vec3I> triangles(part.F.rows());
-  for (int f = 0; f < part.F.rows(); ++f)
-    triangles[f] = openvdb::Vec3I(part.F(f, 0), part.F(f, 1), part.F(f, 2));
-  const auto transform = openvdb::math::Transform::createLinearTransform(h);
-  return openvdb::tools::meshToSignedDistanceField<FloatGrid>(*transform, points, triangles, {}, float(band),
-                                                               float(band));
 }
 
 /// The maps from the swept grid's index space to B's index space (same step h), one per sample.
@@ -75,48 +62,6 @@ Eigen::AlignedBox3d swept_box(const geometry::Mesh& part, const RelativeMotion& 
   return box;
 }
 
-/// B's distance grid copied into a dense array over its active voxels' box (the lookups of
-/// the sweep are then a few nanoseconds each). Beyond the band (|φ| >= b, the grid's
-/// background) a look-up gives −b inside, and outside the larger of b and the distance to
-/// B's bounding sphere: both lower bounds of |φ| there.
-class DenseDistance {
- public:
-  /// @param center, radius  B's bounding sphere, in index space and world units
-  DenseDistance(const FloatGrid& grid, const Eigen::Vector3d& center, double radius, double h)
-      : background_(grid.background()), center_(center), radius_(radius), h_(h) {
-    const openvdb::CoordBBox box = grid.evalActiveVoxelBoundingBox();
-    lo_ = Eigen::Vector3i(box.min().x(), box.min().y(), box.min().z());
-    const openvdb::Coord dim = box.dim();
-    size_ = Eigen::Vector3i(dim.x(), dim.y(), dim.z());
-    values_.resize(std::size_t(size_.prod()));
-    tbb::parallel_for(0, size_.x(), [&](int i) {
-      auto accessor = grid.getConstAccessor();
-      for (int j = 0; j < size_.y(); ++j)
-        for (int k = 0; k < size_.z(); ++k)
-          values_[index(i, j, k)] = accessor.getValue(Coord(lo_.x() + i, lo_.y() + j, lo_.z() + k));
-    });
-  }
-
-  /// The value at the voxel nearest to index-space point x.
-  float nearest(const Eigen::Vector3d& x) const {
-    const int i = int(std::floor(x.x() + 0.5)) - lo_.x(), j = int(std::floor(x.y() + 0.5)) - lo_.y(),
-              k = int(std::floor(x.z() + 0.5)) - lo_.z();
-    const bool in_box =
-        unsigned(i) < unsigned(size_.x()) && unsigned(j) < unsigned(size_.y()) && unsigned(k) < unsigned(size_.z());
-    const float value = in_box ? values_[index(i, j, k)] : background_;
-    if (value < background_) return value;
-    return std::max(value, float((x - center_).norm() * h_ - radius_));
-  }
-
- private:
-  std::size_t index(int i, int j, int k) const { return (std::size_t(i) * size_.y() + j) * size_.z() + k; }
-  float background_;
-  Eigen::Vector3d center_;
-  double radius_, h_;
-  Eigen::Vector3i lo_, size_;
-  std::vector<float> values_;
-};
-
 /// What one leaf of the swept grid turned out to be.
 struct LeafResult {
   enum Kind { kOutside, kInside, kBand } kind = kOutside;
@@ -132,7 +77,7 @@ struct LeafResult {
 /// otherwise only the samples with φ̃_k(c) − s_n < min(m + s_n, ℓ + W) can set a voxel's minimum.
 class LeafEvaluator {
  public:
-  LeafEvaluator(const DenseDistance& part_grid, const std::vector<IndexMap>& maps, double h, double level, double band,
+  LeafEvaluator(const detail::PartDistance& part_grid, const std::vector<IndexMap>& maps, double h, double level, double band,
                 double lookup_error)
       : part_grid_(part_grid), maps_(maps), h_(h), level_(level), band_(band), lookup_error_(lookup_error) {}
 
@@ -193,7 +138,7 @@ class LeafEvaluator {
         for (int l = 0; l < n; ++l) values[((local.x() + i) << 6) | ((local.y() + j) << 3) | (local.z() + l)] = value;
   }
 
-  const DenseDistance& part_grid_;
+  const detail::PartDistance& part_grid_;
   const std::vector<IndexMap>& maps_;
   double h_, level_, band_, lookup_error_;
 };
@@ -237,11 +182,13 @@ SweptVolumeResult swept_volume(const geometry::Mesh& part, const RelativeMotion&
   result.level = request.offset + result.motion_error + lookup_error + kSqrt3 * h;
   result.margin = result.level - request.offset;
   const double band = 1.5 * h;  // |F − ℓ| is stored up to this, beyond it only the side matters
-  // Beyond ℓ + W + (the slack of a 2³ block) a look-up only needs to be a lower bound.
+  // Outside, beyond ℓ + W + (the slack of a 2³ block) a look-up only needs to be a lower bound.
   const double part_band_voxels = std::ceil((result.level + band + 0.5 * kSqrt3 * h + 2 * lookup_error) / h) + 2;
 
   if (!report_progress(request.progress, 0.0)) return result.cancelled = true, result;
-  const FloatGrid::Ptr part_grid = part_distance_grid(part, h, part_band_voxels);
+  // Inside, ℓ − W − (that slack) is all a voxel needs to be told from deep inside.
+  const double inner_band = std::max(2 * h, band + 0.5 * kSqrt3 * h + 2 * lookup_error + 2 * h - result.level);
+  const detail::PartDistance part_distance(part, h, part_band_voxels * h, inner_band);
   if (!report_progress(request.progress, 0.1)) return result.cancelled = true, result;
 
   Eigen::AlignedBox3d box = swept_box(part, motion, times, result.level + result.motion_error + band + 2 * h);
@@ -271,10 +218,7 @@ SweptVolumeResult swept_volume(const geometry::Mesh& part, const RelativeMotion&
       }
 
   const std::vector<IndexMap> maps = index_maps(motion, times, h);
-  const Eigen::Vector3d part_center = 0.5 * (part.V.colwise().minCoeff() + part.V.colwise().maxCoeff()).transpose();
-  const double part_radius = (part.V.rowwise() - part_center.transpose()).rowwise().norm().maxCoeff();
-  const DenseDistance dense(*part_grid, part_center / h, part_radius, h);
-  const LeafEvaluator evaluator(dense, maps, h, result.level, band, lookup_error);
+  const LeafEvaluator evaluator(part_distance, maps, h, result.level, band, lookup_error);
   std::vector<LeafResult> leaves(origins.size());
   std::atomic<bool> cancelled{false};
   std::atomic<std::size_t> done{0};

@@ -51,10 +51,10 @@ struct SweptVolumeResult {
 
 /// The swept volume S = ∪_t g(t)B offset by ε, meshed conservatively.
 ///
-/// How. B's signed distance φ is computed once in B's frame on a narrow-band sparse grid of
-/// step h (OpenVDB `meshToSignedDistanceField`: exact distances to the triangles near the
-/// surface, the sign from its voxel flood fill, not from pseudonormals) and looked up at the
-/// grid points moved back by g(τ_k)⁻¹ at time samples τ_k chosen so that no point moves more
+/// How. B's signed distance φ is computed once in B's frame on a grid of step h (exact distances
+/// to the nearest triangle from the triangle tree up to a band, the sign from the parity of
+/// surface crossings along the grid rows, not from pseudonormals) and looked up at the grid
+/// points moved back by g(τ_k)⁻¹ at time samples τ_k chosen so that no point moves more
 /// than δ between samples. The sparse grid of step h over S's box is evaluated leaf by leaf
 /// (8³ voxels): a leaf is skipped for a sample whose value at the leaf's center proves every
 /// voxel far outside, filled as an inside tile when one sample proves every voxel deep inside
