@@ -6,8 +6,6 @@
 
 #include <benchmark/benchmark.h>
 
-#include <ctime>
-#include <cstdio>
 #include <filesystem>
 #include <numbers>
 
@@ -40,12 +38,6 @@ void BM_SweptVolumeBunny(benchmark::State& state) {
   sweep::SweptVolumeRequest request;
   request.offset = 0.01;
   sweep::SweptVolumeResult result;
-  {
-    std::clock_t c0 = std::clock(); double last = -1;
-    request.progress = [&](double f) { if (f == 0.1 || f == 1.0 || f - last > 0.3) { last = f; fprintf(stderr, "%.2f cpu %.3f\n", f, double(std::clock() - c0) / CLOCKS_PER_SEC); } return true; };
-    sweep::swept_volume(bunny, motion, request);
-    request.progress = {};
-  }
   for (auto _ : state) result = sweep::swept_volume(bunny, motion, request);
   const geometry::MeshReport report = geometry::check_mesh(result.mesh);
   state.counters["part_triangles"] = bunny.face_count();
