@@ -173,6 +173,7 @@ SweptVolumeResult swept_volume(const geometry::Mesh& part, const RelativeMotion&
     const double size = part.V.colwise().maxCoeff().maxCoeff() - part.V.colwise().minCoeff().minCoeff();
     Eigen::AlignedBox3d coarse = swept_box(part, motion, motion.time_samples(0.05 * size, unused), 2 * request.offset);
     if (request.clip) coarse = coarse.intersection(*request.clip);
+    if (coarse.isEmpty()) return result;  // the sweep misses the clip box
     h = std::max(coarse.sizes().maxCoeff(), 1e-3 * size) / 128;
   }
   result.grid_step = h;

@@ -87,6 +87,20 @@ TEST(CarvePart, KeepsEveryTriangleAwayFromTheCut) {
   }
 }
 
+TEST(CarvePart, ACarverThatNeverReachesThePartLeavesItAsItIs) {
+  scene::Reconfigurable scene = rod_through_block(0.1);
+  scene.parts.push_back(box_part("far", {0.1, 0.1, 0.1}));
+  scene.states[0].poses["far"] = {Eigen::Quaterniond::Identity(), {5, 0, 0}};
+  scene.states[1].poses["far"] = {Eigen::Quaterniond::Identity(), {5, 0, 0}};
+  CarveRequest request;
+  request.part = 0;
+  request.carvers = {2};
+  const CarveResult result = carve_part(scene, request);
+  ASSERT_TRUE(result.ok()) << result.problem;
+  EXPECT_TRUE(result.sweeps[0].mesh.empty());
+  EXPECT_TRUE(result.mesh.V == scene.parts[0].mesh.V && result.mesh.F == scene.parts[0].mesh.F);
+}
+
 TEST(SubtractMeshes, RefusesAnOpenCutterAndChangesNothing) {
   const geometry::Mesh solid = scene::Part::primitive_mesh(scene::BoxPrimitive{{1, 1, 1}});
   geometry::Mesh open = scene::Part::primitive_mesh(scene::BoxPrimitive{{0.5, 0.5, 2}});
