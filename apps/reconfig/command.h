@@ -38,5 +38,7 @@ void add_ccd_queries_command(CLI::App& app, int& exit_code);
 void add_bench_command(CLI::App& app, int& exit_code);
 void add_resolve_command(CLI::App& app, int& exit_code);
 void add_sculpt_command(CLI::App& app, int& exit_code);
+void add_sweep_command(CLI::App& app, int& exit_code);
+void add_carve_command(CLI::App& app, int& exit_code);
 
 }  // namespace reconfig::cli

@@ -15,8 +15,8 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "reconfig 0.1.0");
   int exit_code = kExitOk;
   for (CommandRegistrar add : {add_info_command, add_check_command, add_pose_command, add_linkage_command,
-                               add_ccd_queries_command, add_render_command, add_resolve_command, add_bench_command,
-                               add_sculpt_command})
+                               add_ccd_queries_command, add_render_command, add_resolve_command, add_sweep_command,
+                               add_carve_command, add_bench_command, add_sculpt_command})
     add(app, exit_code);
   try {
     app.parse(argc, argv);

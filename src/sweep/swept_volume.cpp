@@ -1,0 +1,261 @@
+// The only file of the sweep module that includes OpenVDB (its headers are heavy).
+#include "reconfig/sweep/swept_volume.h"
+
+#include <openvdb/openvdb.h>
+#include <openvdb/tools/VolumeToMesh.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <limits>
+#include <mutex>
+
+#include "reconfig/geometry/bounding_box.h"
+#include "reconfig/geometry/mass_properties.h"
+#include "sweep/detail/outer_shells.h"
+#include "sweep/detail/part_distance.h"
+
+namespace reconfig::sweep {
+namespace {
+
+using openvdb::Coord;
+using openvdb::FloatGrid;
+using openvdb::FloatTree;
+
+constexpr int kLeafDim = 8;  // FloatTree::LeafNodeType::DIM
+const double kSqrt3 = std::sqrt(3.0);
+
+void initialize_openvdb() {
+  static std::once_flag once;
+  std::call_once(once, [] { openvdb::initialize(); });
+}
+
+/// The maps from the swept grid's index space to B's index space (same step h), one per sample.
+struct IndexMap {
+  Eigen::Matrix3d linear;
+  Eigen::Vector3d offset;
+  Eigen::Vector3d apply(const Eigen::Vector3d& x) const { return linear * x + offset; }
+};
+
+std::vector<IndexMap> index_maps(const RelativeMotion& motion, const std::vector<double>& times, double h) {
+  std::vector<IndexMap> maps;
+  for (double t : times) {
+    const Eigen::Isometry3d inverse = motion.at(t).inverse();
+    maps.push_back({inverse.linear(), inverse.translation() / h});
+  }
+  return maps;
+}
+
+/// Box (world, A's frame) holding B at every sample, padded by `pad`.
+Eigen::AlignedBox3d swept_box(const geometry::Mesh& part, const RelativeMotion& motion, const std::vector<double>& times,
+                              double pad) {
+  const Eigen::AlignedBox3d rest(part.V.colwise().minCoeff().transpose(), part.V.colwise().maxCoeff().transpose());
+  Eigen::AlignedBox3d box;
+  for (double t : times) {
+    const Eigen::Isometry3d g = motion.at(t);
+    for (int c = 0; c < 8; ++c) box.extend(g * rest.corner(static_cast<Eigen::AlignedBox3d::CornerType>(c)));
+  }
+  box.min().array() -= pad;
+  box.max().array() += pad;
+  return box;
+}
+
+/// What one leaf of the swept grid turned out to be.
+struct LeafResult {
+  enum Kind { kOutside, kInside, kBand } kind = kOutside;
+  std::unique_ptr<FloatTree::LeafNodeType> leaf;
+  int voxels = 0;
+};
+
+/// The evaluation of the swept field F − ℓ on one leaf (values clamped to [−W, W]), by
+/// recursive subdivision of the leaf into blocks of 4³, 2³ and single voxels. A block of n³
+/// voxels around center c: every voxel x has φ̃_k(x) >= φ̃_k(c) − s_n with s_n = the block's
+/// half diagonal + 2e (φ is 1-Lipschitz, a look-up is within e of it), so with
+/// m = min_k φ̃_k(c): the block is inside when m + s_n < ℓ − W, outside when m − s_n > ℓ + W, and
+/// otherwise only the samples with φ̃_k(c) − s_n < min(m + s_n, ℓ + W) can set a voxel's minimum.
+class LeafEvaluator {
+ public:
+  LeafEvaluator(const detail::PartDistance& part_grid, const std::vector<IndexMap>& maps, double h, double level, double band,
+                double lookup_error)
+      : part_grid_(part_grid), maps_(maps), h_(h), level_(level), band_(band), lookup_error_(lookup_error) {}
+
+  LeafResult evaluate(const Coord& origin) const {
+    std::vector<int> all(maps_.size());
+    for (std::size_t k = 0; k < all.size(); ++k) all[k] = static_cast<int>(k);
+    std::vector<float> values(FloatTree::LeafNodeType::SIZE, float(band_));  // F − ℓ, x-major
+    const Eigen::Vector3d leaf_origin(origin.x(), origin.y(), origin.z());
+    const Kind kind = refine(leaf_origin, Eigen::Vector3i::Zero(), kLeafDim, all, values);
+    if (kind == kInsideBlock) return {LeafResult::kInside, nullptr, 0};
+    if (kind == kOutsideBlock) return {};
+    auto leaf = std::make_unique<FloatTree::LeafNodeType>(origin, float(band_), false);
+    for (openvdb::Index n = 0; n < FloatTree::LeafNodeType::SIZE; ++n) leaf->setValueOn(n, values[n]);
+    return {LeafResult::kBand, std::move(leaf), FloatTree::LeafNodeType::SIZE};
+  }
+
+ private:
+  enum Kind { kInsideBlock, kOutsideBlock, kMixedBlock };
+
+  /// Fills the n³ block at `local` (voxel offset in the leaf) of `values`; says what it was.
+  Kind refine(const Eigen::Vector3d& leaf_origin, const Eigen::Vector3i& local, int n, const std::vector<int>& candidates,
+              std::vector<float>& values) const {
+    const Eigen::Vector3d center = leaf_origin + local.cast<double>() + Eigen::Vector3d::Constant(0.5 * (n - 1));
+    std::vector<float> at_center(candidates.size());
+    float m = std::numeric_limits<float>::infinity();
+    for (std::size_t c = 0; c < candidates.size(); ++c) {
+      at_center[c] = part_grid_.nearest(maps_[candidates[c]].apply(center));
+      m = std::min(m, at_center[c]);
+    }
+    if (n == 1) {
+      values[(local.x() << 6) | (local.y() << 3) | local.z()] = float(std::clamp(m - level_, -band_, band_));
+      return kMixedBlock;
+    }
+    const double slack = 0.5 * (n - 1) * kSqrt3 * h_ + 2 * lookup_error_;
+    if (m + slack < level_ - band_) {
+      fill(local, n, float(-band_), values);
+      return kInsideBlock;
+    }
+    if (m - slack > level_ + band_) return kOutsideBlock;  // values stay +W
+    const double keep_below = std::min(m + slack, level_ + band_) + slack;
+    std::vector<int> kept;
+    for (std::size_t c = 0; c < candidates.size(); ++c)
+      if (at_center[c] < keep_below) kept.push_back(candidates[c]);
+    const int half = n / 2;
+    int inside = 0, outside = 0;
+    for (int child = 0; child < 8; ++child) {
+      const Eigen::Vector3i offset(child >> 2, (child >> 1) & 1, child & 1);
+      const Kind kind = refine(leaf_origin, local + half * offset, half, kept, values);
+      inside += kind == kInsideBlock;
+      outside += kind == kOutsideBlock;
+    }
+    return inside == 8 ? kInsideBlock : outside == 8 ? kOutsideBlock : kMixedBlock;
+  }
+
+  static void fill(const Eigen::Vector3i& local, int n, float value, std::vector<float>& values) {
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j)
+        for (int l = 0; l < n; ++l) values[((local.x() + i) << 6) | ((local.y() + j) << 3) | (local.z() + l)] = value;
+  }
+
+  const detail::PartDistance& part_grid_;
+  const std::vector<IndexMap>& maps_;
+  double h_, level_, band_, lookup_error_;
+};
+
+geometry::Mesh mesh_from_vdb(const std::vector<openvdb::Vec3s>& points, const std::vector<openvdb::Vec3I>& triangles,
+                             const std::vector<openvdb::Vec4I>& quads) {
+  geometry::Mesh mesh;
+  mesh.V.resize(static_cast<Eigen::Index>(points.size()), 3);
+  for (std::size_t i = 0; i < points.size(); ++i) mesh.V.row(i) << points[i].x(), points[i].y(), points[i].z();
+  mesh.F.resize(static_cast<Eigen::Index>(triangles.size() + 2 * quads.size()), 3);
+  Eigen::Index f = 0;
+  for (const auto& t : triangles) mesh.F.row(f++) << int(t[0]), int(t[1]), int(t[2]);
+  for (const auto& q : quads) {
+    mesh.F.row(f++) << int(q[0]), int(q[1]), int(q[2]);
+    mesh.F.row(f++) << int(q[0]), int(q[2]), int(q[3]);
+  }
+  if (geometry::mass_properties(mesh).volume < 0) mesh.F.col(1).swap(mesh.F.col(2));
+  return mesh;
+}
+
+}  // namespace
+
+SweptVolumeResult swept_volume(const geometry::Mesh& part, const RelativeMotion& motion,
+                               const SweptVolumeRequest& request) {
+  SweptVolumeResult result;
+  if (part.empty()) return result;
+  initialize_openvdb();
+  // h: given, or 1/128 of the longest side of the box swept by B's box (coarse samples).
+  double h = request.grid_step;
+  if (h <= 0) {
+    double unused = 0;
+    const double size = part.V.colwise().maxCoeff().maxCoeff() - part.V.colwise().minCoeff().minCoeff();
+    Eigen::AlignedBox3d coarse = swept_box(part, motion, motion.time_samples(0.05 * size, unused), 2 * request.offset);
+    if (request.clip) coarse = coarse.intersection(*request.clip);
+    if (coarse.isEmpty()) return result;  // the sweep misses the clip box
+    h = std::max(coarse.sizes().maxCoeff(), 1e-3 * size) / 128;
+  }
+  result.grid_step = h;
+  const std::vector<double> times = motion.time_samples(request.time_fraction * h, result.motion_error);
+  result.time_samples = static_cast<int>(times.size());
+  const double lookup_error = 0.5 * kSqrt3 * h;
+  result.level = request.offset + result.motion_error + lookup_error + kSqrt3 * h;
+  result.margin = result.level - request.offset;
+  const double band = 1.5 * h;  // |F − ℓ| is stored up to this, beyond it only the side matters
+  // Outside, beyond ℓ + W + (the slack of a 2³ block) a look-up only needs to be a lower bound.
+  const double part_band_voxels = std::ceil((result.level + band + 0.5 * kSqrt3 * h + 2 * lookup_error) / h) + 2;
+
+  if (!report_progress(request.progress, 0.0)) return result.cancelled = true, result;
+  // Inside, ℓ − W − (that slack) is all a voxel needs to be told from deep inside.
+  const double inner_band = std::max(2 * h, band + 0.5 * kSqrt3 * h + 2 * lookup_error + 2 * h - result.level);
+  const detail::PartDistance part_distance(part, h, part_band_voxels * h, inner_band);
+  if (!report_progress(request.progress, 0.1)) return result.cancelled = true, result;
+
+  Eigen::AlignedBox3d box = swept_box(part, motion, times, result.level + result.motion_error + band + 2 * h);
+  if (request.clip) {
+    Eigen::AlignedBox3d clip = *request.clip;
+    clip.min().array() -= 2 * h;
+    clip.max().array() += 2 * h;
+    box = box.intersection(clip);
+    if (box.isEmpty()) return result;
+  }
+  const Eigen::Vector3i lo = (box.min() / h).array().floor().cast<int>();
+  const Eigen::Vector3i hi = (box.max() / h).array().ceil().cast<int>();
+  result.grid_size = {hi.x() - lo.x(), hi.y() - lo.y(), hi.z() - lo.z()};
+  // The leaves over the box, and a ring of outside leaves around them: volumeToMesh looks for
+  // sign changes from a leaf's voxels towards +x, +y, +z only, so a surface reaching the box's
+  // faces (clipped) closes only against a leaf.
+  std::vector<Coord> origins, ring;
+  const auto leaf_floor = [](int v) { return v >= 0 ? v / kLeafDim * kLeafDim : -((-v + kLeafDim - 1) / kLeafDim) * kLeafDim; };
+  const Eigen::Vector3i first(leaf_floor(lo.x()), leaf_floor(lo.y()), leaf_floor(lo.z()));
+  const Eigen::Vector3i last(leaf_floor(hi.x()), leaf_floor(hi.y()), leaf_floor(hi.z()));
+  for (int x = first.x() - kLeafDim; x <= last.x() + kLeafDim; x += kLeafDim)
+    for (int y = first.y() - kLeafDim; y <= last.y() + kLeafDim; y += kLeafDim)
+      for (int z = first.z() - kLeafDim; z <= last.z() + kLeafDim; z += kLeafDim) {
+        const bool inner = x >= first.x() && x <= last.x() && y >= first.y() && y <= last.y() && z >= first.z() &&
+                           z <= last.z();
+        (inner ? origins : ring).emplace_back(x, y, z);
+      }
+
+  const std::vector<IndexMap> maps = index_maps(motion, times, h);
+  const LeafEvaluator evaluator(part_distance, maps, h, result.level, band, lookup_error);
+  std::vector<LeafResult> leaves(origins.size());
+  std::atomic<bool> cancelled{false};
+  std::atomic<std::size_t> done{0};
+  std::mutex progress_mutex;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, origins.size(), 16), [&](const tbb::blocked_range<std::size_t>& range) {
+    if (cancelled) return;
+    for (std::size_t n = range.begin(); n != range.end(); ++n) leaves[n] = evaluator.evaluate(origins[n]);
+    const double fraction = double(done += range.size()) / double(origins.size());
+    std::lock_guard lock(progress_mutex);
+    if (!report_progress(request.progress, 0.1 + 0.8 * fraction)) cancelled = true;
+  });
+  if (cancelled) return result.cancelled = true, result;
+
+  FloatGrid::Ptr swept = FloatGrid::create(float(band));
+  swept->setTransform(openvdb::math::Transform::createLinearTransform(h));
+  swept->setGridClass(openvdb::GRID_LEVEL_SET);
+  FloatTree& tree = swept->tree();
+  for (std::size_t n = 0; n < leaves.size(); ++n) {
+    // Inside: a leaf of active −W voxels rather than a tile, so that the surface is also found
+    // where the inside meets the background (volumeToMesh looks from active voxels only).
+    if (leaves[n].kind == LeafResult::kInside) tree.addLeaf(new FloatTree::LeafNodeType(origins[n], float(-band), true));
+    if (leaves[n].kind != LeafResult::kBand) continue;
+    result.active_voxels += leaves[n].voxels;
+    tree.addLeaf(leaves[n].leaf.release());
+  }
+  for (const Coord& origin : ring) tree.addLeaf(new FloatTree::LeafNodeType(origin, float(band), true));
+  std::vector<openvdb::Vec3s> points;
+  std::vector<openvdb::Vec3I> triangles;
+  std::vector<openvdb::Vec4I> quads;
+  openvdb::tools::volumeToMesh(*swept, points, triangles, quads, 0.0, 0.0);
+  result.mesh = detail::outer_shells(mesh_from_vdb(points, triangles, quads), result.filled_cavities);
+  if (!report_progress(request.progress, 1.0)) {
+    result.mesh = {};
+    result.cancelled = true;
+  }
+  return result;
+}
+
+}  // namespace reconfig::sweep
