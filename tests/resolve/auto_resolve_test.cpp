@@ -2,8 +2,6 @@
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
-#include <variant>
 #include <cstdio>
 #include <random>
 #include <string>
@@ -94,16 +92,7 @@ TEST(AutoResolve, TheHastyKitchenIsResolvedByRetimingItsPullouts) {
 scene::Reconfigurable end_state_inside_scene() {
   scene::Reconfigurable scene = testing::two_part_scene(geometry::make_box({1, 1, 1}), geometry::make_box({0.5, 0.5, 0.5}),
                                                         {{-3, 0, 0}, {-1.5, 0, 0}, {-0.6, 0, 0}});
-  scene::Transition back = scene.transitions[0];
-  back.name = "back";
-  std::swap(back.from, back.to);
-  auto& keyed = std::get<scene::KeyframedTrack>(back.tracks.at("mover"));
-  std::reverse(keyed.translation.begin(), keyed.translation.end());
-  for (auto& key : keyed.translation) {
-    key.time = 1 - key.time;
-    std::swap(key.in, key.out);
-  }
-  scene.transitions.push_back(back);
+  scene.transitions.push_back(testing::reversed_transition(scene.transitions[0], "back"));
   return scene;
 }
 

@@ -2,12 +2,13 @@
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <random>
-#include <variant>
+#include <string>
+#include <initializer_list>
 
 #include "reconfig/common/input_error.h"
 #include "reconfig/scene/edits.h"
+#include "resolve_scenes.h"
 #include "support/random_scene.h"
 
 namespace reconfig::resolve {
@@ -57,30 +58,37 @@ Eigen::Vector3d point_velocity(const Eigen::Matrix<double, 6, 1>& twist, const E
   return twist.head<3>() + twist.tail<3>().cross(y);
 }
 
+/// The twist Jacobian of part 0 in transition 0 against central differences of displace_keys,
+/// at a vertex of the part, at each of `times`.
+void expect_jacobian_matches_finite_differences(const scene::Reconfigurable& scene, const std::vector<KeyDof>& dofs,
+                                                std::initializer_list<double> times, const std::string& label) {
+  const int n = dof_coordinates(dofs);
+  const scene::Part& part = scene.parts[0];
+  const Eigen::Vector3d p = part.mesh.V.row(0).transpose();
+  for (double t : times) {
+    const auto J = twist_jacobian(scene, 0, 0, dofs, t);
+    const Eigen::Vector3d y = scene.pose_at(0, 0, t).apply(part.center, p);
+    for (int k = 0; k < n; ++k) {
+      const double h = 1e-6;
+      const auto displaced = [&](double s) {
+        scene::Reconfigurable moved = scene;
+        Eigen::VectorXd step = Eigen::VectorXd::Zero(n);
+        step[k] = s;
+        displace_keys(moved, 0, 0, dofs, step);
+        return moved.pose_at(0, 0, t).apply(part.center, p);
+      };
+      const Eigen::Vector3d fd = (displaced(h) - displaced(-h)) / (2 * h);
+      const Eigen::Vector3d analytic = point_velocity(J.col(k), y);
+      EXPECT_LT((analytic - fd).norm(), 1e-5 * (1 + fd.norm())) << label << " t " << t << " coordinate " << k;
+    }
+  }
+}
+
 TEST(KeyDofs, TwistJacobianMatchesFiniteDifferencesOfEveryKind) {
   for (std::uint32_t seed = 1; seed <= 12; ++seed) {
     const scene::Reconfigurable scene = scene_with_inner_keys(seed);
-    const std::vector<KeyDof> dofs = key_dofs(scene, 0, 0);
-    const int n = dof_coordinates(dofs);
-    const scene::Part& part = scene.parts[0];
-    for (double t : {0.05, 0.3, 0.55, 0.77, 0.96}) {
-      const auto J = twist_jacobian(scene, 0, 0, dofs, t);
-      const Eigen::Vector3d p = part.mesh.V.row(0).transpose();
-      const Eigen::Vector3d y = scene.pose_at(0, 0, t).apply(part.center, p);
-      for (int k = 0; k < n; ++k) {
-        const double h = 1e-6;
-        const auto displaced = [&](double s) {
-          scene::Reconfigurable moved = scene;
-          Eigen::VectorXd step = Eigen::VectorXd::Zero(n);
-          step[k] = s;
-          displace_keys(moved, 0, 0, dofs, step);
-          return moved.pose_at(0, 0, t).apply(part.center, p);
-        };
-        const Eigen::Vector3d fd = (displaced(h) - displaced(-h)) / (2 * h);
-        const Eigen::Vector3d analytic = point_velocity(J.col(k), y);
-        EXPECT_LT((analytic - fd).norm(), 1e-5 * (1 + fd.norm())) << "seed " << seed << " t " << t << " coordinate " << k;
-      }
-    }
+    expect_jacobian_matches_finite_differences(scene, key_dofs(scene, 0, 0), {0.05, 0.3, 0.55, 0.77, 0.96},
+                                               "seed " + std::to_string(seed));
   }
 }
 
@@ -100,41 +108,12 @@ TEST(KeyDofs, EndKeysAreListedOnlyWhenAsked) {
 TEST(KeyDofs, EndKeysMoveTheStatesAndEveryTransitionThroughThem) {
   for (std::uint32_t seed = 4; seed <= 8; ++seed) {
     scene::Reconfigurable scene = scene_with_inner_keys(seed);
-    // A second transition back from "end" to "start".
-    scene::Transition back = scene.transitions[0];
-    back.name = "back";
-    std::swap(back.from, back.to);
-    for (auto& [name, track] : back.tracks) {
-      auto& keyed = std::get<scene::KeyframedTrack>(track);
-      std::reverse(keyed.translation.begin(), keyed.translation.end());
-      for (auto& key : keyed.translation) {
-        key.time = 1 - key.time;
-        std::swap(key.in, key.out);
-      }
-      std::reverse(keyed.rotation.begin(), keyed.rotation.end());
-      for (auto& key : keyed.rotation) key.time = 1 - key.time;
-    }
-    scene.transitions.push_back(back);
+    scene.transitions.push_back(testing::reversed_transition(scene.transitions[0], "back"));
     const std::vector<KeyDof> dofs = key_dofs(scene, 0, 0, {.end_keys = true});
     const int n = dof_coordinates(dofs);
     const scene::Part& part = scene.parts[0];
-    const Eigen::Vector3d p = part.mesh.V.row(0).transpose();
     // The Jacobian of the end keys matches finite differences, at the ends too.
-    for (double t : {0.0, 0.04, 0.5, 0.97, 1.0}) {
-      const auto J = twist_jacobian(scene, 0, 0, dofs, t);
-      const Eigen::Vector3d y = scene.pose_at(0, 0, t).apply(part.center, p);
-      for (int k = 0; k < n; ++k) {
-        const auto displaced = [&](double s) {
-          scene::Reconfigurable moved = scene;
-          Eigen::VectorXd step = Eigen::VectorXd::Zero(n);
-          step[k] = s;
-          displace_keys(moved, 0, 0, dofs, step);
-          return moved.pose_at(0, 0, t).apply(part.center, p);
-        };
-        const Eigen::Vector3d fd = (displaced(1e-6) - displaced(-1e-6)) / 2e-6;
-        EXPECT_LT((point_velocity(J.col(k), y) - fd).norm(), 1e-5 * (1 + fd.norm())) << seed << " " << t << " " << k;
-      }
-    }
+    expect_jacobian_matches_finite_differences(scene, dofs, {0.0, 0.04, 0.5, 0.97, 1.0}, "seed " + std::to_string(seed));
     // A step on every coordinate: the states hold the new end poses, and "back" starts and
     // ends where "move" ends and starts.
     scene::Reconfigurable moved = scene;

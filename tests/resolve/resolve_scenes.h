@@ -4,7 +4,10 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <string>
+#include <utility>
+#include <variant>
 #include <vector>
 
 #include "reconfig/geometry/primitives.h"
@@ -49,6 +52,24 @@ inline scene::Part make_part(std::string name, geometry::Mesh mesh) {
   part.mesh = std::move(mesh);
   part.center = scene::part_center(part.mesh);
   return part;
+}
+
+/// `transition` run backwards, named `name`: from its end state to its start, every keyframed
+/// track reversed in time (handles swapped).
+inline scene::Transition reversed_transition(scene::Transition transition, std::string name) {
+  transition.name = std::move(name);
+  std::swap(transition.from, transition.to);
+  for (auto& [part, track] : transition.tracks) {
+    auto& keyed = std::get<scene::KeyframedTrack>(track);
+    std::reverse(keyed.translation.begin(), keyed.translation.end());
+    for (auto& key : keyed.translation) {
+      key.time = 1 - key.time;
+      std::swap(key.in, key.out);
+    }
+    std::reverse(keyed.rotation.begin(), keyed.rotation.end());
+    for (auto& key : keyed.rotation) key.time = 1 - key.time;
+  }
+  return transition;
 }
 
 /// A design whose part 0 (`still`) holds still and whose part 1 (`mover`) translates along a
