@@ -57,6 +57,29 @@ bool same_keys(const scene::Track& a, const scene::Track& b) {
          std::equal(x->rotation.begin(), x->rotation.end(), y->rotation.begin(), y->rotation.end(), same_rotation);
 }
 
+/// The edits that turn `now` into `resolved` (automatic resolution of `transition`): the parts
+/// moved in a state (every transition through it follows), then the transition's changed
+/// tracks.
+std::vector<std::unique_ptr<scene::Command>> resolution_edits(const scene::Reconfigurable& now,
+                                                              const scene::Reconfigurable& resolved, int transition) {
+  std::vector<std::unique_ptr<scene::Command>> steps;
+  for (std::size_t s = 0; s < resolved.states.size(); ++s)
+    for (const scene::Part& part : resolved.parts) {
+      const motion::Pose was = now.states[s].pose_of(part.name), pose = resolved.states[s].pose_of(part.name);
+      if (was.translation != pose.translation || was.rotation.coeffs() != pose.rotation.coeffs())
+        steps.push_back(scene::set_state_pose(resolved.states[s].name, part.name, pose));
+    }
+  std::map<std::string, scene::Track> tracks;
+  const auto& before = now.transitions[transition].tracks;
+  for (const auto& [part, track] : resolved.transitions[transition].tracks) {
+    const auto it = before.find(part);
+    if (it == before.end() || !same_keys(track, it->second)) tracks[part] = track;
+  }
+  const std::string& name = resolved.transitions[transition].name;
+  if (!tracks.empty()) steps.push_back(scene::set_transition_tracks(name, std::move(tracks), "resolve " + name));
+  return steps;
+}
+
 }  // namespace
 
 namespace {
@@ -185,7 +208,7 @@ bool Studio::slide_along_hint(double amount, bool live) {
   return applied;
 }
 
-bool Studio::start_auto_resolve(bool move_times) {
+bool Studio::start_auto_resolve(bool move_times, bool move_states) {
   if (!document_ || active_transition_ < 0 || auto_resolve_) return false;
   auto job = std::make_unique<AutoResolveJob>();
   job->transition = active_transition_;
@@ -195,6 +218,7 @@ bool Studio::start_auto_resolve(bool move_times) {
   request.transition = active_transition_;
   request.detector = document_->detector_options();
   request.move_times = move_times;
+  request.move_states = move_states;
   request.progress = [state](double fraction) {
     state->progress = fraction;
     return !state->cancel.load();
@@ -231,20 +255,20 @@ void Studio::poll_auto_resolve() {
     return;
   }
   const std::string& name = document_->scene().transitions[transition].name;
-  std::map<std::string, scene::Track> tracks;
-  const auto& now = document_->scene().transitions[transition].tracks;
-  for (const auto& [part, track] : result.scene.transitions[transition].tracks) {
-    const auto it = now.find(part);
-    if (it == now.end() || !same_keys(track, it->second)) tracks[part] = track;
-  }
-  if (tracks.empty()) {
+  std::vector<std::unique_ptr<scene::Command>> steps = resolution_edits(document_->scene(), result.scene, transition);
+  if (steps.empty()) {
     set_status(fmt::format("automatic resolution of {}: {}; nothing changed", name, result.stopped_because),
                !result.collision_free);
     return;
   }
-  if (execute(scene::set_transition_tracks(name, std::move(tracks), fmt::format("resolve {} automatically", name))))
-    set_status(fmt::format("resolved {} automatically in {} rounds: {}", name, result.rounds.size(), result.stopped_because),
-               !result.collision_free);
+  std::string elsewhere;
+  for (const auto& [other, intervals] : result.rechecked)
+    if (intervals > 0) elsewhere += fmt::format("; {} now has {} collision interval(s)", other, intervals);
+  const std::string label = fmt::format("resolve {} automatically", name);
+  if (execute(scene::command_sequence(label, std::move(steps))))
+    set_status(fmt::format("resolved {} automatically in {} rounds: {}{}", name, result.rounds.size(),
+                           result.stopped_because, elsewhere),
+               !result.collision_free || !elsewhere.empty());
   hint_.reset();
 }
 
@@ -344,8 +368,10 @@ void Studio::draw_resolve_section() {
                 100 * auto_resolve_->progress.load());
     ImGui::SameLine();
     if (ImGui::Button("Cancel")) cancel_auto_resolve();
-  } else if (ImGui::Button("Resolve automatically")) {
-    start_auto_resolve();
+  } else {
+    if (ImGui::Button("Resolve automatically")) start_auto_resolve(true, auto_resolve_moves_states_);
+    ImGui::SameLine();
+    ImGui::Checkbox("states may move", &auto_resolve_moves_states_);
   }
   if (!hint_ || hint_->transition != active_transition_) return;
   if (!hint_is_current()) {

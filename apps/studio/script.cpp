@@ -138,8 +138,9 @@ class Runner {
   }
 
   /// Automatic resolution of the open transition, waited for (one undoable edit).
-  void resolve_automatically(double seconds) {
-    if (!studio().start_auto_resolve()) fail("automatic resolution needs an open transition (and none running)");
+  void resolve_automatically(double seconds, bool move_states) {
+    if (!studio().start_auto_resolve(true, move_states))
+      fail("automatic resolution needs an open transition (and none running)");
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(static_cast<long>(seconds * 1000));
     while (studio().auto_resolving()) {
       if (std::chrono::steady_clock::now() > deadline) {
@@ -293,7 +294,9 @@ class Runner {
     } else if (action == "sculpt") {
       sculpt(args);
     } else if (action == "resolve-auto") {
-      resolve_automatically(args.empty() ? 120 : number(args, 0, "timeout in seconds"));
+      const bool move_states = !args.empty() && args.back() == "move-states";
+      const bool timed = args.size() > (move_states ? 1u : 0u);
+      resolve_automatically(timed ? number(args, 0, "timeout in seconds") : 120, move_states);
     } else if (action == "expect-collisions") {
       const auto& collisions = current_collisions();
       const int expected = static_cast<int>(number(args, 0, "interval count"));

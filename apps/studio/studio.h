@@ -138,8 +138,9 @@ class Studio {
   /// slide is one undoable edit. @return success
   bool slide_along_hint(double amount, bool live = false);
   /// Starts automatic resolution of the open transition in the background (key times may move
-  /// when `move_times`); the result arrives as one undoable edit. @return it started
-  bool start_auto_resolve(bool move_times = true);
+  /// when `move_times`, the transition's states when `move_states`: every transition through a
+  /// moved state follows); the result arrives as one undoable edit. @return it started
+  bool start_auto_resolve(bool move_times = true, bool move_states = false);
   /// Cancels a running automatic resolution (nothing is changed).
   void cancel_auto_resolve();
   bool auto_resolving() const { return auto_resolve_ != nullptr; }
@@ -358,6 +359,7 @@ class Studio {
     std::future<resolve::AutoResolveResult> result;
   };
   std::unique_ptr<AutoResolveJob> auto_resolve_;
+  bool auto_resolve_moves_states_ = false;  ///< the inspector's "states may move"
   SculptSettings sculpt_settings_;  ///< sculpt_panel.cpp
   std::unique_ptr<std::future<HintView>> hint_job_;  ///< a hint computed in the background
   bool quit_ = false;

@@ -2,8 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
+
 #include "keys.h"
 #include "script.h"
+#include "support/test_data.h"
 #include "studio_test_util.h"
 
 namespace reconfig::studio {
@@ -142,6 +145,62 @@ TEST_F(StudioResolve, NoHintWithoutACollision) {
   studio().select_part(studio().document()->scene().find_part("seat"));
   EXPECT_FALSE(studio().request_hint());
   EXPECT_NE(studio().status().find("does not collide"), std::string::npos) << studio().status();
+}
+
+// A box that slides along x and stops half inside a still block (the end state itself
+// collides), and a transition back to the start from there.
+constexpr const char* kEndInside = R"({
+  "format": "reconfig-scene", "version": 1, "units": "m",
+  "parts": [{"name": "block", "box": {"size": [1, 1, 1]}}, {"name": "mover", "box": {"size": [0.5, 0.5, 0.5]}}],
+  "states": [
+    {"name": "start", "poses": {"mover": {"translation": [-3, 0, 0], "rotation": [1, 0, 0, 0]}}},
+    {"name": "end", "poses": {"mover": {"translation": [-0.6, 0, 0], "rotation": [1, 0, 0, 0]}}}
+  ],
+  "transitions": [
+    {"name": "go", "from": "start", "to": "end", "tracks": {"mover": {"translation": [
+      {"time": 0.0, "point": [-3, 0, 0], "in": [-3, 0, 0], "out": [-2.2, 0, 0]},
+      {"time": 1.0, "point": [-0.6, 0, 0], "in": [-1.4, 0, 0], "out": [-0.6, 0, 0]}]}}},
+    {"name": "back", "from": "end", "to": "start", "tracks": {"mover": {"translation": [
+      {"time": 0.0, "point": [-0.6, 0, 0], "in": [-0.6, 0, 0], "out": [-1.4, 0, 0]},
+      {"time": 1.0, "point": [-3, 0, 0], "in": [-2.2, 0, 0], "out": [-3, 0, 0]}]}}}
+  ]
+})";
+
+TEST(StudioResolveStates, ACollidingStateMovesOnlyWhenAllowedAndUndoPutsItBack) {
+  const std::filesystem::path file = testing::fresh_temp_dir() / "end-inside.json";
+  std::ofstream(file) << kEndInside;
+  StudioOptions options;
+  options.autosave_interval = milliseconds(0);
+  HeadlessFrontend frontend(1000, 700, options);
+  Studio& studio = frontend.studio();
+  ASSERT_TRUE(studio.open(file)) << studio.status();
+  studio.open_transition(0);
+  const auto end_pose = [&] {
+    const scene::Reconfigurable& scene = studio.document()->scene();
+    return scene.states[scene.find_state("end")].pose_of("mover").translation;
+  };
+  const Eigen::Vector3d before = end_pose();
+  run_script(frontend,
+             "wait-collisions\n"
+             "expect-collisions 1\n"
+             "resolve-auto 60\n"
+             "wait-collisions\n"
+             "expect-collisions 1\n",  // the end keys are the state's pose: nothing to move
+             "states fixed");
+  EXPECT_EQ(end_pose(), before);
+  run_script(frontend,
+             "resolve-auto 60 move-states\n"
+             "wait-collisions\n"
+             "expect-collisions 0\n"
+             "expect-status resolved go automatically\n",
+             "states free");
+  EXPECT_NE(end_pose(), before);
+  // "back" starts in the moved state.
+  const scene::Reconfigurable& scene = studio.document()->scene();
+  EXPECT_EQ(scene.pose_at(1, scene.find_part("mover"), 0.0).translation, end_pose());
+  ASSERT_TRUE(studio.undo());  // one step: the state and both transitions
+  EXPECT_EQ(end_pose(), before);
+  EXPECT_EQ(studio.document()->scene().pose_at(1, 1, 0.0).translation, before);
 }
 
 }  // namespace

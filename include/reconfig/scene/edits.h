@@ -5,6 +5,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "reconfig/geometry/mesh.h"
 #include "reconfig/motion/bezier_translation_track.h"
@@ -56,6 +57,10 @@ std::unique_ptr<Command> set_pose_at(const Reconfigurable& scene, std::string tr
 /// @param label  what the step says in the history ("resolve unfold automatically")
 std::unique_ptr<Command> set_transition_tracks(std::string transition, std::map<std::string, Track> tracks,
                                                std::string label);
+
+/// `steps` applied in order as one undoable step labelled `label` (reverted in reverse order);
+/// when a step is refused, the ones before it are reverted and the refusal is thrown.
+std::unique_ptr<Command> command_sequence(std::string label, std::vector<std::unique_ptr<Command>> steps);
 
 /// Replaces a part's rest geometry; its pivot `center` is kept so poses keep their meaning.
 std::unique_ptr<Command> replace_part_mesh(std::string part, geometry::Mesh mesh);
