@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <initializer_list>
 #include <limits>
 #include <map>
 #include <optional>
@@ -176,19 +177,21 @@ struct RoundOutcome {
   ResolveRound round;
 };
 
-/// The descent direction −g/|g| without the coordinates along which a tiny step already raises
+/// The descent direction −g/|g| without the coordinates along which a small step already raises
 /// the objective: a part touching another (a drawer in its runners) has no contour yet, so the
 /// gradient cannot see that the smallest move into it makes one appear at full length (the
-/// contour energy jumps there). Those coordinates are held for this step.
-Eigen::VectorXd feasible_direction(const Eigen::VectorXd& g, double e0, double probe,
+/// contour energy jumps there). Each coordinate is probed at every length of `probes`; those
+/// that raise it at any are held for this step.
+Eigen::VectorXd feasible_direction(const Eigen::VectorXd& g, double e0, std::initializer_list<double> probes,
                                    const std::function<double(const Eigen::VectorXd&)>& energy) {
   Eigen::VectorXd d = -g / g.norm();
-  for (int k = 0; k < d.size(); ++k) {
-    if (d[k] == 0) continue;
-    Eigen::VectorXd z = Eigen::VectorXd::Zero(d.size());
-    z[k] = d[k] > 0 ? probe : -probe;
-    if (energy(z) > e0) d[k] = 0;
-  }
+  for (int k = 0; k < d.size(); ++k)
+    for (double probe : probes) {
+      if (d[k] == 0) break;
+      Eigen::VectorXd z = Eigen::VectorXd::Zero(d.size());
+      z[k] = d[k] > 0 ? probe : -probe;
+      if (energy(z) > e0) d[k] = 0;
+    }
   const double norm = d.norm();
   return norm > 0 ? Eigen::VectorXd(d / norm) : d;
 }
@@ -208,9 +211,16 @@ scene::Reconfigurable descend_with(scene::Reconfigurable scene, ShapeCache& shap
     const Eigen::VectorXd g = space.gradient(scene, energy);
     if (g.norm() == 0 || !std::isfinite(g.norm())) break;
     const auto at = [&](const Eigen::VectorXd& z) { return energy_at(space, z, objective, shapes, cancel); };
-    const Eigen::VectorXd d = feasible_direction(g, energy.energy, 1e-5 * size, at);
-    if (d.norm() == 0) break;
-    const double alpha = detail::line_search([&](double a) { return at(a * d); }, energy.energy, size, clearance);
+    const auto search = [&](const Eigen::VectorXd& d) {
+      return d.norm() > 0 ? detail::line_search([&](double a) { return at(a * d); }, energy.energy, size, clearance)
+                          : 0.0;
+    };
+    Eigen::VectorXd d = feasible_direction(g, energy.energy, {1e-5 * size}, at);
+    double alpha = search(d);
+    if (alpha == 0) {  // a contact may lie a little farther than the probe looked: probe farther
+      d = feasible_direction(g, energy.energy, {1e-5 * size, 1e-4 * size, 1e-3 * size}, at);
+      alpha = search(d);
+    }
     if (alpha == 0) break;
     scene = space.at(alpha * d);
     energy = detail::evaluate(objective, scene, shapes);
