@@ -24,8 +24,10 @@
 #include "collision/detail/moving_bounds.h"
 #include "collision/detail/sample_axes.h"
 #include "collision/detail/urgency_queue.h"
+#include "reconfig/collision/contact_tolerance.h"
 #include "reconfig/collision/frame_grid.h"
 #include "reconfig/collision/triangle_pair_ccd.h"
+#include "reconfig/collision/triangle_touching.h"
 #include "reconfig/geometry/triangle_intersection.h"
 
 namespace reconfig::collision::detail {
@@ -158,13 +160,15 @@ struct Traversal {
   /// Per pair, side and sample: the axes seen from the part's rest frame.
   std::vector<std::array<std::vector<SampleAxes<family>, Eigen::aligned_allocator<SampleAxes<family>>>, 2>> axes;
   double pad = 0;  ///< absolute padding against rounding in bound arithmetic (`rounding_pad`)
+  double contact = 0;  ///< the contact tolerance δ (`contact_tolerance`)
   std::vector<double> size;  ///< per pair: the smaller part's size (box diagonal)
   /// Per pair and step: the frames the step overlaps (`FrameGrid::frames_overlapping`).
   std::vector<std::vector<std::pair<int, int>>> step_frames;
 
   Traversal(const scene::Reconfigurable& s, const BodyTrees& t, const std::vector<PartProxy>& p,
             const DetectorOptions& o, std::vector<PairTimeline> l, double rounding)
-      : scene(s), trees(t), proxies(p), options(o), grid(o.frame), lines(std::move(l)), pad(rounding) {
+      : scene(s), trees(t), proxies(p), options(o), grid(o.frame), lines(std::move(l)), pad(rounding),
+        contact(contact_tolerance(s, o.contact)) {
     axes.resize(lines.size());
     for (std::size_t i = 0; i < lines.size(); ++i)
       for (int side = 0; side < 2; ++side)
@@ -547,7 +551,10 @@ double process(const Traversal<family>& tr, const WorkItem& item, std::vector<Wo
         const TrianglePairCcdResult spans = triangle_pair_ccd(request);
         stats.narrow_pieces += spans.pieces;
         stats.contact_tests += spans.contact_tests;
-        const std::vector<TimeInterval>& pieces = spans.intervals;
+        // Where the triangles only touch within δ, they do not collide (`triangle_touching.h`).
+        const std::vector<TimeInterval> pieces =
+            tr.options.touching_collides ? spans.intervals
+                                         : interference_pieces(a0, a1, b0, b1, spans.intervals, tr.contact);
         for (std::size_t first = 0, end = 1; first < pieces.size(); first = end++) {
           while (end < pieces.size() && pieces[end].lo <= pieces[end - 1].hi) ++end;  // a run of touching pieces
           emit(a0, a1, b0, b1, std::span(pieces).subspan(first, end - first), false);
@@ -575,7 +582,9 @@ double process(const Traversal<family>& tr, const WorkItem& item, std::vector<Wo
         ++stats.narrow_phase;
         const MovingTriangle a = tr.corners(item.pair, 0, na.triangle, s0);
         const MovingTriangle b = tr.corners(item.pair, 1, nb.triangle, s0);
-        if (geometry::triangles_intersect(a[0], a[1], a[2], b[0], b[1], b[2])) emit_one(a, a, b, b, 0, 1, false);
+        if (geometry::triangles_intersect(a[0], a[1], a[2], b[0], b[1], b[2]) &&
+            (tr.options.touching_collides || !triangles_touch(a, b, tr.contact)))
+          emit_one(a, a, b, b, 0, 1, false);
       }
     };
     if (single_step || (!line.moving[0] && !line.moving[1])) {
@@ -632,14 +641,6 @@ bool contact_less(const TriangleContact& x, const TriangleContact& y) {
 
 
 namespace {
-
-void add_stats(DetectionStats& into, const DetectionStats& s) {
-  into.bound_tests += s.bound_tests;
-  into.narrow_phase += s.narrow_phase;
-  into.narrow_pieces += s.narrow_pieces;
-  into.contact_tests += s.contact_tests;
-  into.pruned += s.pruned;
-}
 
 /// Work items per task in the breadth-first phase.
 constexpr std::size_t kBreadthFirstGrain = 4;
@@ -784,7 +785,7 @@ bool run_traversal(const Traversal<family>& tr, const std::vector<ContactHint>& 
       found.add(c.line, c.contact);
       contacts.push_back(c.contact);
     }
-    stat_parts.combine_each([&](const DetectionStats& s) { add_stats(stats, s); });
+    stat_parts.combine_each([&](const DetectionStats& s) { stats += s; });
     stats.levels = depth;
     if (callbacks.preview) {
       std::vector<std::pair<double, double>> ranges = contact_ranges();
@@ -900,7 +901,7 @@ bool run_traversal(const Traversal<family>& tr, const std::vector<ContactHint>& 
       for (std::size_t g = 0; g < steps.size(); ++g)
         if ((step_of(g).second % 2 == 1) == odd) {
           for (const LineContact& c : step_contacts[g]) contacts.push_back(c.contact);
-          add_stats(stats, step_stats[g]);
+          stats += step_stats[g];
         }
   }
   std::sort(contacts.begin(), contacts.end(), contact_less);
