@@ -35,9 +35,10 @@ void collide_pair(const TriangleBvh& a, const TriangleBvh& b, const Semantics& s
   a.for_each_overlapping_pair(b, [&](int f, int g) {
     const TriangleCorners ta{corner(a, f, 0), corner(a, f, 1), corner(a, f, 2)};
     const TriangleCorners tb{corner(b, g, 0), corner(b, g, 1), corner(b, g, 2)};
+    // (The cheap touching test first: it spares the exact intersection of touching faces.)
+    if (!semantics.touching_collides && triangles_touch(ta, tb, semantics.contact)) return;
     const geometry::TriangleContact hit = geometry::intersect_triangles(ta[0], ta[1], ta[2], tb[0], tb[1], tb[2]);
     if (!hit.intersect) return;
-    if (!semantics.touching_collides && triangles_touch(ta, tb, semantics.contact)) return;
     ++contact.triangle_pairs;
     for (const Eigen::Vector3d& p : hit.points) contact.box.extend(p);
   });

@@ -152,7 +152,7 @@ bool SpacetimeDetector::traverse(const scene::Reconfigurable& scene, const BodyT
   contacts_.insert(contacts_.end(), contacts.begin(), contacts.end());
   std::inplace_merge(contacts_.begin(), contacts_.begin() + kept, contacts_.end(), detail::contact_less);
   groups_ = detail::group_contacts(contacts_, options_, trees);
-  detail::refine_interval_ends(scene, trees, proxies_, options_, contacts_, groups_, stats_);
+  detail::refine_interval_ends(scene, trees, proxies_, options_, groups_, stats_);
 
   if (options_.detect_containment) {
     const double delta = contact_tolerance(scene, options_.contact);

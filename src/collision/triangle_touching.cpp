@@ -21,13 +21,19 @@ TriangleCorners at(const TriangleCorners& p0, const TriangleCorners& p1, double 
 
 Vector3d normal_of(const TriangleCorners& t) { return (t[1] - t[0]).cross(t[2] - t[0]); }
 
+/// Up to 17 unit directions.
+struct Axes {
+  std::array<Vector3d, 17> axis;
+  int count = 0;
+};
+
 /// The candidate directions of the separating axis theorem for two triangles (unit length;
-/// degenerate ones left out).
-std::vector<Vector3d> separating_axes(const TriangleCorners& a, const TriangleCorners& b) {
-  std::vector<Vector3d> axes;
+/// degenerate ones left out), the normals first.
+Axes separating_axes(const TriangleCorners& a, const TriangleCorners& b) {
+  Axes axes;
   const auto add = [&](const Vector3d& u, double scale) {
     const double length = u.norm();
-    if (length > 1e-12 * scale && std::isfinite(length)) axes.push_back(u / length);
+    if (length > 1e-12 * scale && std::isfinite(length)) axes.axis[axes.count++] = u / length;
   };
   const Vector3d na = normal_of(a), nb = normal_of(b);
   add(na, (a[1] - a[0]).norm() * (a[2] - a[0]).norm());
@@ -47,26 +53,35 @@ std::vector<Vector3d> separating_axes(const TriangleCorners& a, const TriangleCo
   return axes;
 }
 
-/// The lowest value over [lo, hi] of u·n(s), n(s) the (unnormalized) normal of the triangle
-/// moving from p0 to p1: a quadratic in s.
-double lowest_facing(const Vector3d& u, const TriangleCorners& p0, const TriangleCorners& p1, double lo, double hi) {
-  const Vector3d e1 = p0[1] - p0[0], e2 = p0[2] - p0[0];
-  const Vector3d d1 = (p1[1] - p1[0]) - e1, d2 = (p1[2] - p1[0]) - e2;
-  const double c0 = u.dot(e1.cross(e2)), c1 = u.dot(e1.cross(d2) + d1.cross(e2)), c2 = u.dot(d1.cross(d2));
-  const auto q = [&](double s) { return c0 + s * (c1 + s * c2); };
-  double lowest = std::min(q(lo), q(hi));
-  if (c2 > 0) {
-    const double vertex = -c1 / (2 * c2);
-    if (vertex > lo && vertex < hi) lowest = std::min(lowest, q(vertex));
-  }
-  return lowest;
-}
+/// One triangle over [lo, hi]: its corners at both ends and the middle, and its (unnormalized)
+/// normal as the exact quadratic n(s) = n0 + s n1 + s² n2.
+struct Moving {
+  TriangleCorners lo, hi, mid;
+  Vector3d n0, n1, n2;
+  double normal_scale = 0;  ///< the largest |n| at lo, hi and the middle: the facing slack's scale
 
-/// The largest |n(s)| at lo, hi and their middle: the scale of the facing slack.
-double normal_scale(const TriangleCorners& p0, const TriangleCorners& p1, double lo, double hi) {
-  return std::max({normal_of(at(p0, p1, lo)).norm(), normal_of(at(p0, p1, hi)).norm(),
-                   normal_of(at(p0, p1, 0.5 * (lo + hi))).norm()});
-}
+  Moving(const TriangleCorners& p0, const TriangleCorners& p1, double s_lo, double s_hi)
+      : lo(at(p0, p1, s_lo)), hi(at(p0, p1, s_hi)), mid(at(p0, p1, 0.5 * (s_lo + s_hi))) {
+    const Vector3d e1 = p0[1] - p0[0], e2 = p0[2] - p0[0];
+    const Vector3d d1 = (p1[1] - p1[0]) - e1, d2 = (p1[2] - p1[0]) - e2;
+    n0 = e1.cross(e2);
+    n1 = e1.cross(d2) + d1.cross(e2);
+    n2 = d1.cross(d2);
+    normal_scale = std::max({normal_of(lo).norm(), normal_of(hi).norm(), normal_of(mid).norm()});
+  }
+
+  /// The largest value of u·n(s) over [s_lo, s_hi].
+  double highest_facing(const Vector3d& u, double s_lo, double s_hi) const {
+    const double c0 = u.dot(n0), c1 = u.dot(n1), c2 = u.dot(n2);
+    const auto q = [&](double s) { return c0 + s * (c1 + s * c2); };
+    double highest = std::max(q(s_lo), q(s_hi));
+    if (c2 < 0) {
+      const double vertex = -c1 / (2 * c2);
+      if (vertex > s_lo && vertex < s_hi) highest = std::max(highest, q(vertex));
+    }
+    return highest;
+  }
+};
 
 /// How far X reaches above the lowest point of Y along u (X below Y when ≤ δ).
 double overlap(const Vector3d& u, const TriangleCorners& x, const TriangleCorners& y) {
@@ -75,47 +90,37 @@ double overlap(const Vector3d& u, const TriangleCorners& x, const TriangleCorner
   return x_top - y_bottom;
 }
 
-struct Moving {
-  const TriangleCorners& p0;
-  const TriangleCorners& p1;
-};
-
-/// Whether the triangle keeps an extent along u of more than `band` over [lo, hi]: two of its
+/// Whether the triangle keeps an extent along u of more than `band` over the span: two of its
 /// vertices (those furthest apart along u at the middle) stay further apart than that at both
 /// ends (their difference is linear in time).
-bool thick_throughout(const Vector3d& u, const Moving& z, double lo, double hi, double band) {
-  const TriangleCorners mid = at(z.p0, z.p1, 0.5 * (lo + hi));
+bool thick_throughout(const Vector3d& u, const Moving& z, double band) {
   int top = 0, bottom = 0;
   for (int k = 1; k < 3; ++k) {
-    if (u.dot(mid[k]) > u.dot(mid[top])) top = k;
-    if (u.dot(mid[k]) < u.dot(mid[bottom])) bottom = k;
+    if (u.dot(z.mid[k]) > u.dot(z.mid[top])) top = k;
+    if (u.dot(z.mid[k]) < u.dot(z.mid[bottom])) bottom = k;
   }
-  for (const double s : {lo, hi}) {
-    const TriangleCorners t = at(z.p0, z.p1, s);
-    if (u.dot(t[top]) - u.dot(t[bottom]) <= band) return false;
-  }
-  return true;
+  return u.dot(z.lo[top] - z.lo[bottom]) > band && u.dot(z.hi[top] - z.hi[bottom]) > band;
 }
 
-/// Whether X stays below Y along u, overlapping by at most δ, over [lo, hi], and each of them
-/// that may lie flat in the separating band faces the right way throughout: X's normal never
-/// points down, Y's never up.
-bool below_throughout(const Vector3d& u, const Moving& x, const Moving& y, double lo, double hi, double delta) {
-  if (overlap(u, at(x.p0, x.p1, lo), at(y.p0, y.p1, lo)) > delta) return false;
-  if (overlap(u, at(x.p0, x.p1, hi), at(y.p0, y.p1, hi)) > delta) return false;
+/// Whether X stays below Y along u, overlapping by at most δ, over [s_lo, s_hi], and each of
+/// them that may lie flat in the separating band faces the right way throughout: X's normal
+/// never points down, Y's never up.
+bool below_throughout(const Vector3d& u, const Moving& x, const Moving& y, double s_lo, double s_hi, double delta) {
+  if (overlap(u, x.lo, y.lo) > delta || overlap(u, x.hi, y.hi) > delta) return false;
   const double band = 2 * delta;
-  if (!thick_throughout(u, x, lo, hi, band) &&
-      lowest_facing(u, x.p0, x.p1, lo, hi) < -kFacingSlack * normal_scale(x.p0, x.p1, lo, hi))
-    return false;
-  return thick_throughout(u, y, lo, hi, band) ||
-         -lowest_facing(-u, y.p0, y.p1, lo, hi) <= kFacingSlack * normal_scale(y.p0, y.p1, lo, hi);
+  if (!thick_throughout(u, x, band) && x.highest_facing(-u, s_lo, s_hi) > kFacingSlack * x.normal_scale) return false;
+  return thick_throughout(u, y, band) || y.highest_facing(u, s_lo, s_hi) <= kFacingSlack * y.normal_scale;
 }
 
 void classify(const TriangleCorners& a0, const TriangleCorners& a1, const TriangleCorners& b0,
               const TriangleCorners& b1, double lo, double hi, double delta, int depth, std::vector<TimeInterval>& out) {
   if (touching_throughout(a0, a1, b0, b1, lo, hi, delta)) return;
   const double mid = 0.5 * (lo + hi);
-  if (depth == 0 || !(lo < mid && mid < hi)) {
+  // Interfering at both ends (or too short to halve): kept whole (only its ends matter to the
+  // intervals, and those are refined by re-detection).
+  const bool ends_interfere = !touching_throughout(a0, a1, b0, b1, lo, lo, delta) &&
+                              !touching_throughout(a0, a1, b0, b1, hi, hi, delta);
+  if (depth == 0 || ends_interfere || !(lo < mid && mid < hi)) {
     out.push_back({lo, hi});
     return;
   }
@@ -127,10 +132,11 @@ void classify(const TriangleCorners& a0, const TriangleCorners& a1, const Triang
 
 bool touching_throughout(const TriangleCorners& a0, const TriangleCorners& a1, const TriangleCorners& b0,
                          const TriangleCorners& b1, double lo, double hi, double delta) {
-  const double mid = 0.5 * (lo + hi);
-  const Moving a{a0, a1}, b{b0, b1};
-  for (const Vector3d& u : separating_axes(at(a0, a1, mid), at(b0, b1, mid)))
-    if (below_throughout(u, a, b, lo, hi, delta) || below_throughout(u, b, a, lo, hi, delta)) return true;
+  const Moving a(a0, a1, lo, hi), b(b0, b1, lo, hi);
+  const Axes axes = separating_axes(a.mid, b.mid);
+  for (int i = 0; i < axes.count; ++i)
+    if (below_throughout(axes.axis[i], a, b, lo, hi, delta) || below_throughout(axes.axis[i], b, a, lo, hi, delta))
+      return true;
   return false;
 }
 

@@ -14,7 +14,7 @@
 namespace reconfig::collision::detail {
 
 /// How close a refined end lies to the true one (fraction of the transition).
-inline constexpr double kEndTolerance = 1e-7;
+inline constexpr double kEndTolerance = 1e-6;
 
 /// Refines the ends of every interval the groups consolidate into (`consolidate`), and clips
 /// each group to the refined ends of its interval (dropping it if nothing is left). A refined
@@ -22,11 +22,12 @@ inline constexpr double kEndTolerance = 1e-7;
 /// `kEndTolerance`: no interference of the interval lies before it (every detection of a window
 /// is complete), and the piece is one the narrow phase could not clear — so the reported start
 /// lies at most `kEndTolerance` before the true one, or before the time where the triangles
-/// come within the narrow phase's distance tolerance. Ends alike. Possible (conservative)
-/// groups keep their ends. Adds the re-detections' work to `stats` (`end_refinements`).
+/// come within the narrow phase's distance tolerance. Ends alike. The windows re-detected are
+/// the groups' spans, so the refined ends depend on the groups alone (an update refines as a
+/// detection from scratch does). In conservative mode nothing is refined: its ends must cover
+/// the true motion's, which the proxies' re-detection would not. Adds the re-detections' work to `stats` (`end_refinements`).
 void refine_interval_ends(const scene::Reconfigurable& scene, const BodyTrees& trees,
                           const std::vector<PartProxy>& proxies, const DetectorOptions& options,
-                          const std::vector<TriangleContact>& contacts, std::vector<CollisionInterval>& groups,
-                          DetectionStats& stats);
+                          std::vector<CollisionInterval>& groups, DetectionStats& stats);
 
 }  // namespace reconfig::collision::detail

@@ -56,9 +56,9 @@ Affine proxy_map(const PartProxy& proxy, double t) {
   return between(p0, p1, (t - t0) / (t1 - t0));
 }
 
-/// Absolute padding that covers the rounding of bound arithmetic: a multiple of the machine
-/// epsilon times the largest coordinate of any rest vertex or placement.
-double rounding_pad(const scene::Reconfigurable& scene, const std::vector<PartProxy>& proxies) {
+}  // namespace
+
+double traversal_pad(const scene::Reconfigurable& scene, const std::vector<PartProxy>& proxies) {
   double scale = 1;
   for (const scene::Part& part : scene.parts)
     if (part.mesh.V.size() > 0) scale = std::max(scale, part.mesh.V.cwiseAbs().maxCoeff());
@@ -66,6 +66,8 @@ double rounding_pad(const scene::Reconfigurable& scene, const std::vector<PartPr
     for (const Eigen::Isometry3d& pose : proxy.poses) scale = std::max(scale, pose.translation().cwiseAbs().maxCoeff());
   return 64 * std::numeric_limits<double>::epsilon() * scale;
 }
+
+namespace {
 
 /// Both parts of a pair placed at the merged sample times of their proxies over a range:
 /// on every step between consecutive times both parts' vertices move linearly.
@@ -159,7 +161,7 @@ struct Traversal {
   std::vector<PairTimeline> lines;
   /// Per pair, side and sample: the axes seen from the part's rest frame.
   std::vector<std::array<std::vector<SampleAxes<family>, Eigen::aligned_allocator<SampleAxes<family>>>, 2>> axes;
-  double pad = 0;  ///< absolute padding against rounding in bound arithmetic (`rounding_pad`)
+  double pad = 0;  ///< absolute padding against rounding in bound arithmetic (`traversal_pad`)
   double contact = 0;  ///< the contact tolerance δ (`contact_tolerance`)
   std::vector<double> size;  ///< per pair: the smaller part's size (box diagonal)
   /// Per pair and step: the frames the step overlaps (`FrameGrid::frames_overlapping`).
@@ -919,7 +921,7 @@ bool run_traversal(const Traversal<family>& tr, const std::vector<ContactHint>& 
 
 std::vector<TraversalRange> candidate_pairs(const BodyTrees& trees, const std::vector<PartProxy>& proxies,
                                             const scene::Reconfigurable& scene, const DetectorOptions& options) {
-  const double pad = rounding_pad(scene, proxies);
+  const double pad = traversal_pad(scene, proxies);
   std::vector<TraversalRange> pairs;
   const auto run = [&]<DopFamily family>() {
     const int n = static_cast<int>(proxies.size());
@@ -950,8 +952,8 @@ std::vector<TraversalRange> candidate_pairs(const BodyTrees& trees, const std::v
 bool traverse_ranges(const scene::Reconfigurable& scene, const BodyTrees& trees, const std::vector<PartProxy>& proxies,
                      const DetectorOptions& options, const std::vector<TraversalRange>& ranges,
                      const std::vector<ContactHint>& hints, std::vector<TriangleContact>& contacts, DetectionStats& stats,
-                     const DetectCallbacks& callbacks) {
-  const double pad = rounding_pad(scene, proxies);
+                     const DetectCallbacks& callbacks, double given_pad) {
+  const double pad = given_pad > 0 ? given_pad : traversal_pad(scene, proxies);
   bool finished = false;
   const auto run = [&]<DopFamily family>() {
     // Pairs whose parts' whole sweeps over the range cannot meet are left out at once.
