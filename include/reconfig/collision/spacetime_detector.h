@@ -66,6 +66,11 @@ struct DetectorOptions {
   std::size_t breadth_first_items = 64;
 };
 
+/// How close the detector's interval ends lie to the true ones, as a fraction of the
+/// transition (outside them, or up to where the triangles come within the narrow phase's
+/// distance tolerance); conservative mode does not refine its ends.
+inline constexpr double kIntervalEndTolerance = 1e-6;
+
 /// The coarse picture after one level of the breadth-first traversal: every time where a
 /// collision may still be found lies in one of `ranges` (sorted, disjoint).
 struct TraversalPreview {

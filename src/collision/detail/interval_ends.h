@@ -14,7 +14,7 @@
 namespace reconfig::collision::detail {
 
 /// How close a refined end lies to the true one (fraction of the transition).
-inline constexpr double kEndTolerance = 1e-6;
+inline constexpr double kEndTolerance = kIntervalEndTolerance;
 
 /// Refines the ends of every interval the groups consolidate into (`consolidate`), and clips
 /// each group to the refined ends of its interval (dropping it if nothing is left). A refined
