@@ -114,12 +114,12 @@ bool below_throughout(const Vector3d& u, const Moving& x, const Moving& y, doubl
 
 void classify(const TriangleCorners& a0, const TriangleCorners& a1, const TriangleCorners& b0,
               const TriangleCorners& b1, double lo, double hi, double delta, int depth, std::vector<TimeInterval>& out) {
-  if (touching_throughout(a0, a1, b0, b1, lo, hi, delta)) return;
-  const double mid = 0.5 * (lo + hi);
-  // Interfering at both ends (or too short to halve): kept whole (only its ends matter to the
-  // intervals, and those are refined by re-detection).
+  // Interfering at both ends: kept whole (only its ends matter to the intervals, and those are
+  // refined by re-detection), without trying to certify it.
   const bool ends_interfere = !touching_throughout(a0, a1, b0, b1, lo, lo, delta) &&
                               !touching_throughout(a0, a1, b0, b1, hi, hi, delta);
+  if (!ends_interfere && touching_throughout(a0, a1, b0, b1, lo, hi, delta)) return;
+  const double mid = 0.5 * (lo + hi);
   if (depth == 0 || ends_interfere || !(lo < mid && mid < hi)) {
     out.push_back({lo, hi});
     return;
