@@ -13,6 +13,7 @@
 #include "interval_view.h"
 #include "visual_report.h"
 #include "progress_bar.h"
+#include "reconfig/collision/contact_tolerance.h"
 #include "reconfig/collision/detect_collisions.h"
 #include "reconfig/collision/detector_settings.h"
 #include "reconfig/collision/reference_check.h"
@@ -35,6 +36,8 @@ struct CheckOptions {
   int dop = collision::halfspace_count(collision::DetectorOptions{}.dop);
   bool conservative = collision::DetectorOptions{}.conservative;
   double box_resolution = collision::DetectorOptions{}.box_resolution;
+  double contact = 0;
+  bool touching_collides = false;
   scene::CollisionSettings given;  ///< which of them were given
   bool all_contacts = false;
   bool energy = false;
@@ -129,7 +132,7 @@ std::string text_report(const scene::Reconfigurable& scene, const CheckOutcome& 
     out += fmt::format("{} collision interval{}\n", transition.intervals.size(),
                        transition.intervals.size() == 1 ? "" : "s");
     for (const auto& ci : transition.intervals) {
-      out += fmt::format("  t = {:.3f} – {:.3f}  {}{}  at {}\n", ci.t0, ci.t1, part_names(scene, ci), qualifiers(ci),
+      out += fmt::format("  t = {:.6f} – {:.6f}  {}{}  at {}\n", ci.t0, ci.t1, part_names(scene, ci), qualifiers(ci),
                          box_text(ci.box));
       if (!outcome.energies.empty()) {
         const auto& e = outcome.energies[&transition - outcome.transitions.data()][&ci - transition.intervals.data()];
@@ -160,7 +163,7 @@ std::string markdown_report(const scene::Reconfigurable& scene, const CheckOutco
     }
     out += "| from t | to t | parts | where (box) |\n|---|---|---|---|\n";
     for (const auto& ci : transition.intervals)
-      out += fmt::format("| {:.3f} | {:.3f} | {}{} | {} |\n", ci.t0, ci.t1, part_names(scene, ci), qualifiers(ci),
+      out += fmt::format("| {:.6f} | {:.6f} | {}{} | {} |\n", ci.t0, ci.t1, part_names(scene, ci), qualifiers(ci),
                          box_text(ci.box));
     out += "\n";
   }
@@ -177,9 +180,20 @@ CheckOutcome run_reference(const scene::Reconfigurable& scene, const CheckOption
   request.samples = options.samples;
   request.transitions = transitions;
   request.progress = progress;
+  const scene::CollisionSettings settings = scene.collision.overridden_by(options.given);
+  request.contact = settings.contact.value_or(0);
+  request.touching_collides = settings.touching_collides.value_or(false);
   const collision::ReferenceCheckResult result = collision::reference_check(scene, request);
-  return {result.transitions, fmt::format("reference check, {} samples per transition", options.samples),
-          {{"method", "reference"}, {"samples", options.samples}}, 0};
+  return {result.transitions,
+          fmt::format("reference check, {} samples per transition (ends within {:.3g}), contact tolerance {:g}{}",
+                      options.samples, result.time_error, result.contact,
+                      request.touching_collides ? ", touching collides" : ""),
+          {{"method", "reference"},
+           {"samples", options.samples},
+           {"time_error", result.time_error},
+           {"contact", result.contact},
+           {"touching_collides", request.touching_collides}},
+          0};
 }
 
 CheckOutcome run_engine(const scene::Reconfigurable& scene, const CheckOptions& options,
@@ -197,12 +211,17 @@ CheckOutcome run_engine(const scene::Reconfigurable& scene, const CheckOptions& 
   }
   const collision::DetectorOptions& used = request.detector;
   const int dop = collision::halfspace_count(used.dop);
+  const double contact = collision::contact_tolerance(scene, used.contact);
   return {result.transitions,
-          fmt::format("spacetime engine, {}-DOP, tolerance {:g}{}{}", dop, used.tolerance,
+          fmt::format("spacetime engine, {}-DOP, tolerance {:g}, contact tolerance {:g}{}{}{}", dop, used.tolerance,
+                      contact, used.touching_collides ? ", touching collides" : "",
                       used.conservative ? ", conservative" : "", options.all_contacts ? ", every contact" : ""),
           {{"method", "engine"},
            {"dop", dop},
            {"tolerance", used.tolerance},
+           {"contact", contact},
+           {"touching_collides", used.touching_collides},
+           {"time_error", used.conservative ? 0.0 : collision::kIntervalEndTolerance},
            {"conservative", used.conservative},
            {"all_contacts", options.all_contacts},
            {"box_resolution", used.box_resolution},
@@ -325,6 +344,13 @@ void add_check_command(CLI::App& app, int& exit_code) {
                       "(0: exact boxes, slower on deep overlaps; overrides the scene's)")
       ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
+  command->add_option("--contact", options->contact,
+                      "Contact tolerance δ: parts meeting by no more than this only touch (default 1e-6 of the "
+                      "design's size; overrides the scene's)")
+      ->check(CLI::PositiveNumber);
+  command->add_flag("--touching-collides,!--no-touching-collides", options->touching_collides,
+                    "Report parts that only touch (within the contact tolerance) as collisions too; overrides the "
+                    "scene's");
   command->add_option("--threads", options->threads, "Worker threads (default: all cores)")->check(CLI::NonNegativeNumber);
   command->add_option("--samples", options->samples, "Time samples per transition (reference check)")
       ->check(CLI::Range(2, 10000000))
@@ -340,6 +366,9 @@ void add_check_command(CLI::App& app, int& exit_code) {
     if (command->count("--conservative") || command->count("--no-conservative"))
       options->given.conservative = options->conservative;
     if (command->count("--box-resolution")) options->given.box_resolution = options->box_resolution;
+    if (command->count("--contact")) options->given.contact = options->contact;
+    if (command->count("--touching-collides") || command->count("--no-touching-collides"))
+      options->given.touching_collides = options->touching_collides;
     exit_code = run_check(*options);
   });
 }

@@ -1,5 +1,5 @@
 // Collisions > Settings: how the collision service detects (tolerance, k-DOP family, box grid,
-// frame length, conservative mode), edited in a small window and applied to the open design.
+// frame length, conservative mode, contact tolerance, touching), edited in a small window and applied to the open design.
 
 #include <fmt/format.h>
 
@@ -20,11 +20,12 @@ int family_index(collision::DopFamily family) {
 }
 
 std::string describe(const collision::DetectorOptions& options) {
-  return fmt::format("tolerance {:g}, {}-DOP, {}, frames of {:g}{}", options.tolerance,
+  return fmt::format("tolerance {:g}, {}-DOP, {}, frames of {:g}{}{}", options.tolerance,
                      collision::halfspace_count(options.dop),
                      options.box_resolution > 0 ? fmt::format("box grid {:g} %", 100 * options.box_resolution)
                                                 : std::string("exact boxes"),
-                     options.frame, options.conservative ? ", conservative" : "");
+                     options.frame, options.conservative ? ", conservative" : "",
+                     options.touching_collides ? ", touching collides" : "");
 }
 
 void hint(const char* text) {
@@ -82,6 +83,12 @@ void Studio::draw_collision_settings() {
     ImGui::Checkbox("Conservative", &draft.conservative);
     hint("Also report near misses that the true motion (between the samples) may turn into collisions:\n"
          "no collision is ever missed, at the price of some that are not there.");
+    ImGui::Checkbox("Touching collides", &draft.touching_collides);
+    hint("Also report parts that only touch (surfaces within the contact tolerance, interiors not\n"
+         "overlapping beyond it) as collisions: a drawer in its runner, a box on a table.");
+    ImGui::SetNextItemWidth(160);
+    ImGui::InputDouble("Contact tolerance (0: default)", &draft.contact, 0, 0, "%.6g");
+    hint("Parts that meet by no more than this distance only touch. 0: 1e-6 of the design's size.");
     if (ImGui::Button("Apply")) set_detector_options(draft);
     ImGui::SameLine();
     if (ImGui::Button("Close")) open = false;

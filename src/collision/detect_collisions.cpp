@@ -35,15 +35,7 @@ CollisionResult detect_collisions(const scene::Reconfigurable& scene, const Coll
     result.transitions.push_back({transitions[i], name, consolidate(detector.groups(), detector.containments())});
     result.frames.push_back(
         {transitions[i], name, consolidate(detector.groups(), detector.containments(), request.detector.frame)});
-    const DetectionStats& s = detector.last_stats();
-    result.stats.bound_tests += s.bound_tests;
-    result.stats.narrow_phase += s.narrow_phase;
-    result.stats.narrow_pieces += s.narrow_pieces;
-    result.stats.contact_tests += s.contact_tests;
-    result.stats.containment_tests += s.containment_tests;
-    result.stats.pruned += s.pruned;
-    result.stats.levels = std::max(result.stats.levels, s.levels);
-    result.stats.proxy_samples += s.proxy_samples;
+    result.stats += detector.last_stats();
   }
   return result;
 }

@@ -11,6 +11,8 @@ DetectorOptions with_settings(DetectorOptions base, const scene::CollisionSettin
   if (settings.box_resolution) base.box_resolution = *settings.box_resolution;
   if (settings.frame) base.frame = *settings.frame;
   if (settings.conservative) base.conservative = *settings.conservative;
+  if (settings.contact) base.contact = *settings.contact;
+  if (settings.touching_collides) base.touching_collides = *settings.touching_collides;
   return base;
 }
 
@@ -19,7 +21,9 @@ scene::CollisionSettings settings_of(const DetectorOptions& options) {
           .dop = halfspace_count(options.dop),
           .box_resolution = options.box_resolution,
           .frame = options.frame,
-          .conservative = options.conservative};
+          .conservative = options.conservative,
+          .contact = options.contact > 0 ? std::optional(options.contact) : std::nullopt,  // unset: the design's default
+          .touching_collides = options.touching_collides};
 }
 
 }  // namespace reconfig::collision

@@ -8,7 +8,9 @@
 #include <cassert>
 #include <map>
 
-#include "reconfig/geometry/point_in_solid.h"
+#include "collision/detail/deep_inside.h"
+#include "reconfig/collision/contact_tolerance.h"
+#include "reconfig/collision/triangle_touching.h"
 #include "reconfig/geometry/triangle_bvh.h"
 #include "reconfig/geometry/triangle_intersection.h"
 
@@ -20,12 +22,22 @@ using geometry::TriangleBvh;
 
 Eigen::Vector3d corner(const TriangleBvh& bvh, int f, int k) { return bvh.vertices().row(bvh.faces()(f, k)); }
 
-/// Exact contacts between two posed parts at one instant.
-void collide_pair(const TriangleBvh& a, const TriangleBvh& b, SampleContact& contact) {
+/// How a sample tells a collision: the contact tolerance, and whether touching counts.
+struct Semantics {
+  double contact = 0;
+  bool touching_collides = false;
+  bool detect_containment = true;
+};
+
+/// Exact contacts between two posed parts at one instant: intersecting triangle pairs that
+/// interfere beyond δ (or every one, when touching collides).
+void collide_pair(const TriangleBvh& a, const TriangleBvh& b, const Semantics& semantics, SampleContact& contact) {
   a.for_each_overlapping_pair(b, [&](int f, int g) {
-    const geometry::TriangleContact hit =
-        geometry::intersect_triangles(corner(a, f, 0), corner(a, f, 1), corner(a, f, 2), corner(b, g, 0),
-                                      corner(b, g, 1), corner(b, g, 2));
+    const TriangleCorners ta{corner(a, f, 0), corner(a, f, 1), corner(a, f, 2)};
+    const TriangleCorners tb{corner(b, g, 0), corner(b, g, 1), corner(b, g, 2)};
+    // (The cheap touching test first: it spares the exact intersection of touching faces.)
+    if (!semantics.touching_collides && triangles_touch(ta, tb, semantics.contact)) return;
+    const geometry::TriangleContact hit = geometry::intersect_triangles(ta[0], ta[1], ta[2], tb[0], tb[1], tb[2]);
     if (!hit.intersect) return;
     ++contact.triangle_pairs;
     for (const Eigen::Vector3d& p : hit.points) contact.box.extend(p);
@@ -33,16 +45,16 @@ void collide_pair(const TriangleBvh& a, const TriangleBvh& b, SampleContact& con
 }
 
 /// Whether posed part `inner` lies inside posed part `outer`, given that their surfaces do not
-/// cross: then one vertex decides for the whole part.
-bool inside(const TriangleBvh& inner, const TriangleBvh& outer) {
+/// interfere: then one vertex not within δ of `outer`'s surface decides for the whole part.
+bool inside(const TriangleBvh& inner, const TriangleBvh& outer, double delta) {
   if (!outer.bounds().contains(inner.bounds())) return false;
   const Mesh mesh{outer.vertices(), outer.faces()};
-  return geometry::point_in_solid(mesh, inner.vertices().row(inner.faces()(0, 0)));
+  return detail::lies_inside(mesh, inner.vertices(), inner.faces()(0, 0), delta);
 }
 
 /// Every colliding pair of parts at sample `sample` of `transition`.
 std::vector<SampleContact> check_sample(const scene::Reconfigurable& scene, int transition, int sample,
-                                        double t, bool detect_containment) {
+                                        double t, const Semantics& semantics) {
   const int n = static_cast<int>(scene.parts.size());
   std::vector<TriangleBvh> posed;
   posed.reserve(n);
@@ -52,12 +64,12 @@ std::vector<SampleContact> check_sample(const scene::Reconfigurable& scene, int 
     for (int b = a + 1; b < n; ++b) {
       if (!posed[a].bounds().intersects(posed[b].bounds())) continue;
       SampleContact contact{sample, a, b, {}, false, 0};
-      collide_pair(posed[a], posed[b], contact);
-      if (contact.triangle_pairs == 0 && detect_containment) {
-        if (inside(posed[a], posed[b])) {
+      collide_pair(posed[a], posed[b], semantics, contact);
+      if (contact.triangle_pairs == 0 && semantics.detect_containment) {
+        if (inside(posed[a], posed[b], semantics.contact)) {
           contact.containment = true;
           contact.box = posed[a].bounds();
-        } else if (inside(posed[b], posed[a])) {
+        } else if (inside(posed[b], posed[a], semantics.contact)) {
           contact.containment = true;
           contact.box = posed[b].bounds();
         }
@@ -109,6 +121,10 @@ ReferenceCheckResult reference_check(const scene::Reconfigurable& scene, const R
 
   ReferenceCheckResult result;
   result.samples = request.samples;
+  result.time_error = 1.0 / (request.samples - 1);
+  const Semantics semantics{contact_tolerance(scene, request.contact), request.touching_collides,
+                            request.detect_containment};
+  result.contact = semantics.contact;
   const double total = static_cast<double>(transitions.size()) * request.samples;
   std::atomic<long> done{0};
   std::atomic<bool> cancelled{false};
@@ -116,7 +132,7 @@ ReferenceCheckResult reference_check(const scene::Reconfigurable& scene, const R
     std::vector<std::vector<SampleContact>> per_sample(request.samples);
     tbb::parallel_for(tbb::blocked_range<int>(0, request.samples, 8), [&](const tbb::blocked_range<int>& range) {
       for (int i = range.begin(); i < range.end() && !cancelled; ++i) {
-        per_sample[i] = check_sample(scene, transition, i, sample_time(i, request.samples), request.detect_containment);
+        per_sample[i] = check_sample(scene, transition, i, sample_time(i, request.samples), semantics);
         const long finished = ++done;
         // Only the first thread to see a cancel request records it; progress is best effort.
         if (request.progress && (finished % 16 == 0 || finished == total) &&

@@ -9,7 +9,9 @@
 
 #include "collision/detail/spacetime_traversal.h"
 #include "reconfig/geometry/bounding_box.h"
-#include "reconfig/geometry/point_in_solid.h"
+#include "collision/detail/deep_inside.h"
+#include "collision/detail/interval_ends.h"
+#include "reconfig/collision/contact_tolerance.h"
 
 namespace reconfig::collision {
 namespace {
@@ -28,7 +30,7 @@ Eigen::AlignedBox3d placed_box(const BodyTrees& trees, const std::vector<PartPro
 /// not crossing then: one vertex of each of its components lies inside `outer`'s solid. The
 /// whole outer mesh is posed only if those vertices lie within `outer_box`, its placed box.
 bool nested(const scene::Reconfigurable& scene, const BodyTrees& trees, const std::vector<PartProxy>& proxies, int inner,
-            int outer, double t, const Eigen::AlignedBox3d& outer_box) {
+            int outer, double t, const Eigen::AlignedBox3d& outer_box, double delta) {
   const std::vector<int>& probes = trees[inner]->component_vertices();
   Eigen::MatrixX3d rest(static_cast<Eigen::Index>(probes.size()), 3);
   for (std::size_t i = 0; i < probes.size(); ++i) rest.row(static_cast<Eigen::Index>(i)) = scene.parts[inner].mesh.V.row(probes[i]);
@@ -36,12 +38,30 @@ bool nested(const scene::Reconfigurable& scene, const BodyTrees& trees, const st
   for (Eigen::Index i = 0; i < points.rows(); ++i)
     if (!outer_box.contains(points.row(i).transpose())) return false;
   const geometry::Mesh posed{detail::proxy_vertices(scene, proxies[outer], outer, t), scene.parts[outer].mesh.F};
-  for (Eigen::Index i = 0; i < points.rows(); ++i)
-    if (!geometry::point_in_solid(posed, points.row(i).transpose())) return false;
+  for (Eigen::Index i = 0; i < points.rows(); ++i) {
+    if (const auto side = detail::deep_side(posed, points.row(i).transpose(), delta)) {
+      if (!*side) return false;
+    } else if (!detail::lies_inside(posed, detail::proxy_vertices(scene, proxies[inner], inner, t), 0, delta)) {
+      return false;  // the probe touches the outer surface: another vertex decides
+    }
+  }
   return true;
 }
 
 }  // namespace
+
+DetectionStats& DetectionStats::operator+=(const DetectionStats& other) {
+  bound_tests += other.bound_tests;
+  narrow_phase += other.narrow_phase;
+  narrow_pieces += other.narrow_pieces;
+  contact_tests += other.contact_tests;
+  containment_tests += other.containment_tests;
+  pruned += other.pruned;
+  levels = std::max(levels, other.levels);
+  proxy_samples += other.proxy_samples;
+  end_refinements += other.end_refinements;
+  return *this;
+}
 
 BodyTrees build_body_trees(const scene::Reconfigurable& scene) {
   BodyTrees trees;
@@ -132,8 +152,10 @@ bool SpacetimeDetector::traverse(const scene::Reconfigurable& scene, const BodyT
   contacts_.insert(contacts_.end(), contacts.begin(), contacts.end());
   std::inplace_merge(contacts_.begin(), contacts_.begin() + kept, contacts_.end(), detail::contact_less);
   groups_ = detail::group_contacts(contacts_, options_, trees);
+  detail::refine_interval_ends(scene, trees, proxies_, options_, groups_, stats_);
 
   if (options_.detect_containment) {
+    const double delta = contact_tolerance(scene, options_.contact);
     // Nesting can only change when surfaces cross: test once per contact-free stretch, at its
     // middle, where the parts' placed boxes must overlap (those are shared by all pairs).
     std::map<std::pair<int, double>, Eigen::AlignedBox3d> boxes;
@@ -161,7 +183,7 @@ bool SpacetimeDetector::traverse(const scene::Reconfigurable& scene, const BodyT
         const double t = (t0 + t1) / 2;
         if (!box_at(a, t).intersects(box_at(b, t))) continue;
         for (const auto& [inner, outer] : {std::pair{a, b}, std::pair{b, a}}) {
-          if (!nested(scene, trees, proxies_, inner, outer, t, box_at(outer, t))) continue;
+          if (!nested(scene, trees, proxies_, inner, outer, t, box_at(outer, t), delta)) continue;
           Containment containment{inner, outer, t0, t1, {}};
           // The proxy is linear between its samples: its box over [t0, t1] is that of its
           // positions at t0, t1 and the samples between.

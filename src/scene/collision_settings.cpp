@@ -11,6 +11,8 @@ CollisionSettings CollisionSettings::overridden_by(const CollisionSettings& over
   if (over.box_resolution) merged.box_resolution = over.box_resolution;
   if (over.frame) merged.frame = over.frame;
   if (over.conservative) merged.conservative = over.conservative;
+  if (over.contact) merged.contact = over.contact;
+  if (over.touching_collides) merged.touching_collides = over.touching_collides;
   return merged;
 }
 
@@ -20,6 +22,7 @@ std::string CollisionSettings::problem() const {
   if (box_resolution && !(*box_resolution >= 0 && *box_resolution <= 1))
     return "the box grid must be between 0 (exact boxes) and 1 (a part's size)";
   if (frame && !(*frame > 0 && *frame <= 1)) return "a frame must last more than 0 and at most the whole transition";
+  if (contact && !(std::isfinite(*contact) && *contact > 0)) return "the contact tolerance must be a positive distance";
   return "";
 }
 

@@ -270,7 +270,7 @@ Transition read_transition(const JsonCursor& c, const fs::path& base_dir) {
 }
 
 CollisionSettings read_collision_settings(const JsonCursor& c) {
-  c.expect_object({"tolerance", "dop", "box_resolution", "frame", "conservative"});
+  c.expect_object({"tolerance", "dop", "box_resolution", "frame", "conservative", "contact", "touching_collides"});
   CollisionSettings settings;
   if (c.has("tolerance")) settings.tolerance = c["tolerance"].as_number();
   if (c.has("dop")) {
@@ -281,6 +281,8 @@ CollisionSettings read_collision_settings(const JsonCursor& c) {
   if (c.has("box_resolution")) settings.box_resolution = c["box_resolution"].as_number();
   if (c.has("frame")) settings.frame = c["frame"].as_number();
   if (c.has("conservative")) settings.conservative = c["conservative"].as_bool();
+  if (c.has("contact")) settings.contact = c["contact"].as_number();
+  if (c.has("touching_collides")) settings.touching_collides = c["touching_collides"].as_bool();
   // Each setting on its own, so that the error names the one at fault.
   const auto check = [&](const char* key, auto CollisionSettings::*setting) {
     CollisionSettings only;
@@ -290,6 +292,7 @@ CollisionSettings read_collision_settings(const JsonCursor& c) {
   check("tolerance", &CollisionSettings::tolerance);  // (the family was checked as it was read)
   check("box_resolution", &CollisionSettings::box_resolution);
   check("frame", &CollisionSettings::frame);
+  check("contact", &CollisionSettings::contact);
   return settings;
 }
 
@@ -340,6 +343,8 @@ ordered_json collision_settings_json(const CollisionSettings& settings) {
   if (settings.box_resolution) j["box_resolution"] = *settings.box_resolution;
   if (settings.frame) j["frame"] = *settings.frame;
   if (settings.conservative) j["conservative"] = *settings.conservative;
+  if (settings.contact) j["contact"] = *settings.contact;
+  if (settings.touching_collides) j["touching_collides"] = *settings.touching_collides;
   return j;
 }
 

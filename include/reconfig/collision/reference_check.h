@@ -18,6 +18,11 @@ struct ReferenceCheckRequest {
   std::vector<int> transitions;
   /// Also report a part lying entirely inside another (no surface crossing).
   bool detect_containment = true;
+  /// The contact tolerance δ (0: the design's default, `contact_tolerance.h`): triangle pairs
+  /// that only touch within δ (`triangle_touching.h`) are not a collision...
+  double contact = 0;
+  /// ...unless touching collides.
+  bool touching_collides = false;
   ProgressCallback progress;  ///< fraction of samples done over all transitions
 };
 
@@ -35,6 +40,11 @@ struct ReferenceCheckResult {
   /// Per transition (same order), every colliding (sample, pair): the raw oracle data.
   std::vector<std::vector<SampleContact>> contacts;
   int samples = 0;
+  /// How far a sampled end may lie from the true one: an interval [t_i, t_j] of samples means
+  /// the true one starts in (t_{i−1}, t_i] and ends in [t_j, t_{j+1}) — one sample spacing,
+  /// 1 / (samples − 1) (an interval shorter than that may be missed altogether).
+  double time_error = 0;
+  double contact = 0;  ///< the contact tolerance δ used
   bool cancelled = false;
 
   /// Whether any transition has a collision interval.
@@ -42,7 +52,8 @@ struct ReferenceCheckResult {
 };
 
 /// For every requested transition, poses every part at each sample time, finds intersecting
-/// triangle pairs of every pair of parts with a static BVH and the exact triangle test, and
+/// triangle pairs of every pair of parts with a static BVH and the exact triangle test (those
+/// that only touch within δ left out unless touching collides), and
 /// (optionally) a part entirely inside another. Consecutive colliding samples of the same pair
 /// of parts merge into one collision interval whose box bounds the intersections seen.
 /// Parallel over samples; the result is deterministic.

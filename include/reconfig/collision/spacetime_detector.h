@@ -34,6 +34,12 @@ struct DetectorOptions {
   bool conservative = false;
   /// Also report parts nested inside others without surface contact.
   bool detect_containment = true;
+  /// The contact tolerance δ, in scene units (0: `kDefaultContact` of the design's size,
+  /// `contact_tolerance.h`): triangles that only touch within δ (`triangle_touching.h`) are
+  /// not a collision.
+  double contact = 0;
+  /// Report touching (surfaces within δ, interiors not overlapping beyond it) as a collision too.
+  bool touching_collides = false;
   double min_step = 1e-5;  ///< smallest proxy time step
   /// Length of a frame (`FrameGrid`): contacts are clipped to frames and merged into groups
   /// per pair of parts and frame, so every group spans one frame at most and the 3D view's
@@ -60,6 +66,11 @@ struct DetectorOptions {
   std::size_t breadth_first_items = 64;
 };
 
+/// How close the detector's interval ends lie to the true ones, as a fraction of the
+/// transition (outside them, or up to where the triangles come within the narrow phase's
+/// distance tolerance); conservative mode does not refine its ends.
+inline constexpr double kIntervalEndTolerance = 1e-6;
+
 /// The coarse picture after one level of the breadth-first traversal: every time where a
 /// collision may still be found lies in one of `ranges` (sorted, disjoint).
 struct TraversalPreview {
@@ -76,6 +87,10 @@ struct DetectionStats {
   long pruned = 0;          ///< work skipped: its contacts would fall inside groups found already, or its nodes meet in no frame
   int levels = 0;           ///< breadth-first levels processed
   long proxy_samples = 0;   ///< time samples over all parts' proxies
+  long end_refinements = 0;  ///< re-detections of time windows that refined intervals' ends
+
+  /// Sums the counts (`levels`: the largest).
+  DetectionStats& operator+=(const DetectionStats& other);
 };
 
 /// Called during a detection from any of its threads, one call at a time and in order,

@@ -22,8 +22,15 @@ struct CollisionSettings {
   std::optional<double> frame = std::nullopt;
   /// Also report near misses that the true motion may turn into collisions.
   std::optional<bool> conservative = std::nullopt;
+  /// The contact tolerance δ, in scene units (> 0): parts that meet by no more than δ only
+  /// touch. Unset: 1e-6 of the design's size.
+  std::optional<double> contact = std::nullopt;
+  /// Whether touching counts as a collision too.
+  std::optional<bool> touching_collides = std::nullopt;
 
-  bool empty() const { return !tolerance && !dop && !box_resolution && !frame && !conservative; }
+  bool empty() const {
+    return !tolerance && !dop && !box_resolution && !frame && !conservative && !contact && !touching_collides;
+  }
   /// These settings, each one replaced by `over`'s where that one is set.
   CollisionSettings overridden_by(const CollisionSettings& over) const;
   /// Why the settings cannot be used ("the tolerance must be a positive distance"), or "".

@@ -24,8 +24,10 @@
 #include "collision/detail/moving_bounds.h"
 #include "collision/detail/sample_axes.h"
 #include "collision/detail/urgency_queue.h"
+#include "reconfig/collision/contact_tolerance.h"
 #include "reconfig/collision/frame_grid.h"
 #include "reconfig/collision/triangle_pair_ccd.h"
+#include "reconfig/collision/triangle_touching.h"
 #include "reconfig/geometry/triangle_intersection.h"
 
 namespace reconfig::collision::detail {
@@ -54,9 +56,9 @@ Affine proxy_map(const PartProxy& proxy, double t) {
   return between(p0, p1, (t - t0) / (t1 - t0));
 }
 
-/// Absolute padding that covers the rounding of bound arithmetic: a multiple of the machine
-/// epsilon times the largest coordinate of any rest vertex or placement.
-double rounding_pad(const scene::Reconfigurable& scene, const std::vector<PartProxy>& proxies) {
+}  // namespace
+
+double traversal_pad(const scene::Reconfigurable& scene, const std::vector<PartProxy>& proxies) {
   double scale = 1;
   for (const scene::Part& part : scene.parts)
     if (part.mesh.V.size() > 0) scale = std::max(scale, part.mesh.V.cwiseAbs().maxCoeff());
@@ -64,6 +66,8 @@ double rounding_pad(const scene::Reconfigurable& scene, const std::vector<PartPr
     for (const Eigen::Isometry3d& pose : proxy.poses) scale = std::max(scale, pose.translation().cwiseAbs().maxCoeff());
   return 64 * std::numeric_limits<double>::epsilon() * scale;
 }
+
+namespace {
 
 /// Both parts of a pair placed at the merged sample times of their proxies over a range:
 /// on every step between consecutive times both parts' vertices move linearly.
@@ -157,14 +161,16 @@ struct Traversal {
   std::vector<PairTimeline> lines;
   /// Per pair, side and sample: the axes seen from the part's rest frame.
   std::vector<std::array<std::vector<SampleAxes<family>, Eigen::aligned_allocator<SampleAxes<family>>>, 2>> axes;
-  double pad = 0;  ///< absolute padding against rounding in bound arithmetic (`rounding_pad`)
+  double pad = 0;  ///< absolute padding against rounding in bound arithmetic (`traversal_pad`)
+  double contact = 0;  ///< the contact tolerance δ (`contact_tolerance`)
   std::vector<double> size;  ///< per pair: the smaller part's size (box diagonal)
   /// Per pair and step: the frames the step overlaps (`FrameGrid::frames_overlapping`).
   std::vector<std::vector<std::pair<int, int>>> step_frames;
 
   Traversal(const scene::Reconfigurable& s, const BodyTrees& t, const std::vector<PartProxy>& p,
             const DetectorOptions& o, std::vector<PairTimeline> l, double rounding)
-      : scene(s), trees(t), proxies(p), options(o), grid(o.frame), lines(std::move(l)), pad(rounding) {
+      : scene(s), trees(t), proxies(p), options(o), grid(o.frame), lines(std::move(l)), pad(rounding),
+        contact(contact_tolerance(s, o.contact)) {
     axes.resize(lines.size());
     for (std::size_t i = 0; i < lines.size(); ++i)
       for (int side = 0; side < 2; ++side)
@@ -547,7 +553,10 @@ double process(const Traversal<family>& tr, const WorkItem& item, std::vector<Wo
         const TrianglePairCcdResult spans = triangle_pair_ccd(request);
         stats.narrow_pieces += spans.pieces;
         stats.contact_tests += spans.contact_tests;
-        const std::vector<TimeInterval>& pieces = spans.intervals;
+        // Where the triangles only touch within δ, they do not collide (`triangle_touching.h`).
+        const std::vector<TimeInterval> pieces =
+            tr.options.touching_collides ? spans.intervals
+                                         : interference_pieces(a0, a1, b0, b1, spans.intervals, tr.contact);
         for (std::size_t first = 0, end = 1; first < pieces.size(); first = end++) {
           while (end < pieces.size() && pieces[end].lo <= pieces[end - 1].hi) ++end;  // a run of touching pieces
           emit(a0, a1, b0, b1, std::span(pieces).subspan(first, end - first), false);
@@ -575,7 +584,9 @@ double process(const Traversal<family>& tr, const WorkItem& item, std::vector<Wo
         ++stats.narrow_phase;
         const MovingTriangle a = tr.corners(item.pair, 0, na.triangle, s0);
         const MovingTriangle b = tr.corners(item.pair, 1, nb.triangle, s0);
-        if (geometry::triangles_intersect(a[0], a[1], a[2], b[0], b[1], b[2])) emit_one(a, a, b, b, 0, 1, false);
+        if (geometry::triangles_intersect(a[0], a[1], a[2], b[0], b[1], b[2]) &&
+            (tr.options.touching_collides || !triangles_touch(a, b, tr.contact)))
+          emit_one(a, a, b, b, 0, 1, false);
       }
     };
     if (single_step || (!line.moving[0] && !line.moving[1])) {
@@ -632,14 +643,6 @@ bool contact_less(const TriangleContact& x, const TriangleContact& y) {
 
 
 namespace {
-
-void add_stats(DetectionStats& into, const DetectionStats& s) {
-  into.bound_tests += s.bound_tests;
-  into.narrow_phase += s.narrow_phase;
-  into.narrow_pieces += s.narrow_pieces;
-  into.contact_tests += s.contact_tests;
-  into.pruned += s.pruned;
-}
 
 /// Work items per task in the breadth-first phase.
 constexpr std::size_t kBreadthFirstGrain = 4;
@@ -784,7 +787,7 @@ bool run_traversal(const Traversal<family>& tr, const std::vector<ContactHint>& 
       found.add(c.line, c.contact);
       contacts.push_back(c.contact);
     }
-    stat_parts.combine_each([&](const DetectionStats& s) { add_stats(stats, s); });
+    stat_parts.combine_each([&](const DetectionStats& s) { stats += s; });
     stats.levels = depth;
     if (callbacks.preview) {
       std::vector<std::pair<double, double>> ranges = contact_ranges();
@@ -900,7 +903,7 @@ bool run_traversal(const Traversal<family>& tr, const std::vector<ContactHint>& 
       for (std::size_t g = 0; g < steps.size(); ++g)
         if ((step_of(g).second % 2 == 1) == odd) {
           for (const LineContact& c : step_contacts[g]) contacts.push_back(c.contact);
-          add_stats(stats, step_stats[g]);
+          stats += step_stats[g];
         }
   }
   std::sort(contacts.begin(), contacts.end(), contact_less);
@@ -918,7 +921,7 @@ bool run_traversal(const Traversal<family>& tr, const std::vector<ContactHint>& 
 
 std::vector<TraversalRange> candidate_pairs(const BodyTrees& trees, const std::vector<PartProxy>& proxies,
                                             const scene::Reconfigurable& scene, const DetectorOptions& options) {
-  const double pad = rounding_pad(scene, proxies);
+  const double pad = traversal_pad(scene, proxies);
   std::vector<TraversalRange> pairs;
   const auto run = [&]<DopFamily family>() {
     const int n = static_cast<int>(proxies.size());
@@ -949,8 +952,8 @@ std::vector<TraversalRange> candidate_pairs(const BodyTrees& trees, const std::v
 bool traverse_ranges(const scene::Reconfigurable& scene, const BodyTrees& trees, const std::vector<PartProxy>& proxies,
                      const DetectorOptions& options, const std::vector<TraversalRange>& ranges,
                      const std::vector<ContactHint>& hints, std::vector<TriangleContact>& contacts, DetectionStats& stats,
-                     const DetectCallbacks& callbacks) {
-  const double pad = rounding_pad(scene, proxies);
+                     const DetectCallbacks& callbacks, double given_pad) {
+  const double pad = given_pad > 0 ? given_pad : traversal_pad(scene, proxies);
   bool finished = false;
   const auto run = [&]<DopFamily family>() {
     // Pairs whose parts' whole sweeps over the range cannot meet are left out at once.

@@ -39,11 +39,16 @@ struct ContactHint {
 /// runs on its triangle pair before anything else, so that the groups it finds there prune
 /// early (a contact a hint finds is a contact like any other; the groups found do not depend on
 /// the hints, only how soon they are reached and which contacts stand for them).
+/// @param pad  the padding of the bounds against rounding (`traversal_pad`; 0: computed here)
 /// @return false if cancelled through `callbacks.progress`
 bool traverse_ranges(const scene::Reconfigurable& scene, const BodyTrees& trees, const std::vector<PartProxy>& proxies,
                      const DetectorOptions& options, const std::vector<TraversalRange>& ranges,
                      const std::vector<ContactHint>& hints, std::vector<TriangleContact>& contacts, DetectionStats& stats,
-                     const DetectCallbacks& callbacks);
+                     const DetectCallbacks& callbacks, double pad = 0);
+
+/// The absolute padding of every bound against the rounding of bound arithmetic: a multiple of
+/// the machine epsilon times the largest coordinate of any rest vertex or placement.
+double traversal_pad(const scene::Reconfigurable& scene, const std::vector<PartProxy>& proxies);
 
 /// Hints for a search that must find `contacts` again (or their successors after an edit):
 /// per pair of parts and frame, the contacts whose boxes reach furthest along each axis, either

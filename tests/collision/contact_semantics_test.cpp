@@ -1,0 +1,183 @@
+// Touching versus interference, and exact interval ends, in the engine and the reference check.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <random>
+
+#include "reconfig/collision/consolidate.h"
+#include "reconfig/collision/contact_tolerance.h"
+#include "reconfig/collision/reference_check.h"
+#include "reconfig/collision/spacetime_detector.h"
+#include "reconfig/collision/triangle_touching.h"
+#include "reconfig/scene/scene_file.h"
+
+namespace reconfig::collision {
+namespace {
+
+using nlohmann::json;
+
+json vec(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
+json quat(const Eigen::Quaterniond& q) { return {q.w(), q.x(), q.y(), q.z()}; }
+
+/// A straight, constant-speed Bézier track from a to b (handles at thirds).
+json linear_track(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  return {{"translation",
+           {{{"time", 0}, {"point", vec(a)}, {"in", vec(a)}, {"out", vec(a + (b - a) / 3)}},
+            {{"time", 1}, {"point", vec(b)}, {"in", vec(b - (b - a) / 3)}, {"out", vec(b)}}}}};
+}
+
+/// Unit boxes: "mover" slides from `from` to `to`, the others hold still at `fixed`; every
+/// position and orientation is turned by `turn` (about the origin).
+scene::Reconfigurable boxes(const Eigen::Vector3d& from, const Eigen::Vector3d& to,
+                            const std::vector<Eigen::Vector3d>& fixed, const Eigen::Quaterniond& turn = {1, 0, 0, 0},
+                            double mover_size = 1) {
+  json parts = {{{"name", "mover"}, {"box", {{"size", {mover_size, mover_size, mover_size}}}}}};
+  json start = {{"mover", {{"translation", vec(turn * from)}, {"rotation", quat(turn)}}}};
+  json end = {{"mover", {{"translation", vec(turn * to)}, {"rotation", quat(turn)}}}};
+  for (std::size_t i = 0; i < fixed.size(); ++i) {
+    const std::string name = std::string("fixed").append(std::to_string(i));
+    parts.push_back({{"name", name}, {"box", {{"size", {1, 1, 1}}}}});
+    start[name] = end[name] = {{"translation", vec(turn * fixed[i])}, {"rotation", quat(turn)}};
+  }
+  const json document = {
+      {"format", "reconfig-scene"},
+      {"version", 1},
+      {"parts", parts},
+      {"states", {{{"name", "start"}, {"poses", start}}, {{"name", "end"}, {"poses", end}}}},
+      {"transitions",
+       {{{"name", "slide"}, {"from", "start"}, {"to", "end"}, {"tracks", {{"mover", linear_track(turn * from, turn * to)}}}}}}};
+  return scene::parse_scene(document.dump(), std::filesystem::current_path(), "test.json");
+}
+
+std::vector<CollisionInterval> engine(const scene::Reconfigurable& scene, DetectorOptions options = {}) {
+  SpacetimeDetector detector(0, options);
+  EXPECT_TRUE(detector.detect(scene, build_body_trees(scene)));
+  return consolidate(detector.groups(), detector.containments());
+}
+
+std::vector<CollisionInterval> reference(const scene::Reconfigurable& scene, int samples = 601) {
+  ReferenceCheckRequest request;
+  request.samples = samples;
+  return reference_check(scene, request).transitions[0].intervals;
+}
+
+TEST(ContactSemantics, ABoxSlidingThroughAnotherCollidesForExactlyTheMiddleThird) {
+  // x = −3 + 6t: the boxes' interiors overlap for |x| < 1, t ∈ (1/3, 2/3).
+  const scene::Reconfigurable scene = boxes({-3, 0, 0}, {3, 0, 0}, {{0, 0, 0}});
+  for (const double frame : {0.01, 0.07, 1.0}) {
+    DetectorOptions options;
+    options.frame = frame;
+    const std::vector<CollisionInterval> intervals = engine(scene, options);
+    ASSERT_EQ(intervals.size(), 1u) << "frame " << frame;
+    EXPECT_NEAR(intervals[0].t0, 1.0 / 3, 1e-5) << "frame " << frame;
+    EXPECT_NEAR(intervals[0].t1, 2.0 / 3, 1e-5) << "frame " << frame;
+    EXPECT_LE(intervals[0].t0, 1.0 / 3 + 1e-6);  // outward: never later than the true start
+    EXPECT_GE(intervals[0].t1, 2.0 / 3 - 1e-6);
+  }
+  const std::vector<CollisionInterval> sampled = reference(scene);
+  ASSERT_EQ(sampled.size(), 1u);
+  EXPECT_NEAR(sampled[0].t0, 1.0 / 3, 1.0 / 600 + 1e-12);
+  EXPECT_NEAR(sampled[0].t1, 2.0 / 3, 1.0 / 600 + 1e-12);
+}
+
+TEST(ContactSemantics, FaceTouchingBoxesSlideFree) {
+  // The mover's face x = 0.5 slides along the fixed box's face x = 0.5.
+  const scene::Reconfigurable scene = boxes({1, -3, 0}, {1, 3, 0}, {{0, 0, 0}});
+  EXPECT_TRUE(engine(scene).empty());
+  EXPECT_TRUE(reference(scene).empty());
+  DetectorOptions touching;
+  touching.touching_collides = true;  // closed solids: they do touch while side by side
+  const std::vector<CollisionInterval> intervals = engine(scene, touching);
+  ASSERT_FALSE(intervals.empty());
+  EXPECT_NEAR(intervals.front().t0, 1.0 / 3, 1e-3);
+  EXPECT_NEAR(intervals.back().t1, 2.0 / 3, 1e-3);
+}
+
+TEST(ContactSemantics, TouchingBoxesTurnedByRandomAnglesStayFree) {
+  std::mt19937 random(19);
+  for (int round = 0; round < 6; ++round) {
+    const Eigen::Quaterniond turn = Eigen::Quaterniond::UnitRandom();
+    const scene::Reconfigurable scene = boxes({1, -3, 0.25}, {1, 3, -0.25}, {{0, 0, 0}}, turn);
+    EXPECT_TRUE(engine(scene).empty()) << "round " << round;
+    EXPECT_TRUE(reference(scene, 301).empty()) << "round " << round;
+  }
+  (void)random;
+}
+
+TEST(ContactSemantics, BoxesPressedIntoEachOtherCollide) {
+  const scene::Reconfigurable scene = boxes({1 - 1e-3, -3, 0}, {1 - 1e-3, 3, 0}, {{0, 0, 0}});
+  const std::vector<CollisionInterval> intervals = engine(scene);
+  ASSERT_EQ(intervals.size(), 1u);
+  EXPECT_NEAR(intervals[0].t0, 1.0 / 3, 1e-5);
+  EXPECT_NEAR(intervals[0].t1, 2.0 / 3, 1e-5);
+  const std::vector<CollisionInterval> sampled = reference(scene);
+  ASSERT_EQ(sampled.size(), 1u);
+  EXPECT_NEAR(sampled[0].t0, 1.0 / 3, 1.0 / 600 + 1e-12);
+  EXPECT_NEAR(sampled[0].t1, 2.0 / 3, 1.0 / 600 + 1e-12);
+}
+
+TEST(ContactSemantics, AStackOfRestingBoxesIsFree) {
+  // Three boxes resting on each other, flush; a fourth slides along the stack's side, touching.
+  for (const Eigen::Quaterniond& turn : {Eigen::Quaterniond(1, 0, 0, 0), Eigen::Quaterniond::UnitRandom()}) {
+    const scene::Reconfigurable scene = boxes({1, 0, -3}, {1, 0, 3}, {{0, 0, 0}, {0, 0, 1}, {0, 0, 2}}, turn);
+    EXPECT_TRUE(engine(scene).empty());
+    EXPECT_TRUE(reference(scene, 301).empty());
+  }
+}
+
+TEST(ContactSemantics, APartInsideAnotherTouchingItsWallCollides) {
+  // A small box slides inside a unit box along its floor (touching it), all the time inside.
+  const scene::Reconfigurable scene = boxes({-0.2, 0, -0.4}, {0.2, 0, -0.4}, {{0, 0, 0}}, {1, 0, 0, 0}, 0.2);
+  const std::vector<CollisionInterval> intervals = engine(scene);
+  ASSERT_EQ(intervals.size(), 1u);
+  EXPECT_EQ(intervals[0].t0, 0.0);
+  EXPECT_EQ(intervals[0].t1, 1.0);
+  ASSERT_EQ(reference(scene, 101).size(), 1u);
+}
+
+TEST(ContactSemantics, EngineEndsLieWithinTheReferencesOwnError) {
+  // Two turned boxes, one sliding straight through the other's neighborhood (the proxy of a
+  // straight track is exact, so the engine and the reference see the same motion).
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> coordinate(-0.6, 0.6);
+  int compared = 0;
+  for (int round = 0; round < 8; ++round) {
+    const Eigen::Quaterniond turn = Eigen::Quaterniond::UnitRandom();
+    const Eigen::Vector3d from(-3, coordinate(random), coordinate(random)), to(3, coordinate(random), coordinate(random));
+    const scene::Reconfigurable scene = boxes(turn.inverse() * from, turn.inverse() * to, {{0, 0, 0}}, turn);
+    const std::vector<CollisionInterval> intervals = engine(scene);
+    ReferenceCheckRequest request;
+    request.samples = 20001;
+    const ReferenceCheckResult sampled = reference_check(scene, request);
+    const std::vector<CollisionInterval>& expected = sampled.transitions[0].intervals;
+    ASSERT_EQ(intervals.size(), expected.size()) << "round " << round;
+    for (std::size_t i = 0; i < intervals.size(); ++i) {
+      // The reference's first sample lies after the true start by less than its error.
+      EXPECT_LE(intervals[i].t0, expected[i].t0 + 1e-6) << "round " << round;
+      EXPECT_GE(intervals[i].t0, expected[i].t0 - sampled.time_error - 1e-5) << "round " << round;
+      EXPECT_GE(intervals[i].t1, expected[i].t1 - 1e-6) << "round " << round;
+      EXPECT_LE(intervals[i].t1, expected[i].t1 + sampled.time_error + 1e-5) << "round " << round;
+      ++compared;
+    }
+  }
+  EXPECT_GT(compared, 3);  // most rounds do collide
+}
+
+TEST(TriangleTouching, CoplanarFacesTouchFacingEachOtherAndInterfereFacingTheSameWay) {
+  const double delta = 1e-6;
+  const TriangleCorners up{Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 1, 0)};  // normal +z
+  const TriangleCorners down{Eigen::Vector3d(0.2, 0.2, 0), Eigen::Vector3d(0.2, 0.9, 0), Eigen::Vector3d(0.9, 0.2, 0)};
+  EXPECT_TRUE(triangles_touch(up, down, delta));
+  const TriangleCorners same{down[0], down[2], down[1]};  // normal +z too
+  EXPECT_FALSE(triangles_touch(up, same, delta));
+  // Crossing by 1e-3: interference; by δ/2: touching.
+  for (const auto& [depth, touch] : {std::pair{1e-3, false}, std::pair{delta / 2, true}}) {
+    const TriangleCorners across{Eigen::Vector3d(0.2, 0.2, -depth), Eigen::Vector3d(0.3, 0.2, 1), Eigen::Vector3d(0.2, 0.3, 1)};
+    EXPECT_EQ(triangles_touch(up, across, delta), touch) << depth;
+  }
+}
+
+}  // namespace
+}  // namespace reconfig::collision
