@@ -80,9 +80,22 @@ motion::ScrewMotion bunny_screw() {
   return motion::ScrewMotion(Eigen::Isometry3d::Identity(), end);
 }
 
+/// Arg 0: the bunny (75 K triangles); 1: the bunny and the armadillo beside it as one part (127 K).
+geometry::Mesh envelope_part(int which) {
+  geometry::Mesh bunny = bench::cgal_mesh("bunny00.off", 1.0);
+  if (which == 0) return bunny;
+  const geometry::Mesh armadillo = bench::cgal_mesh("armadillo.off", 1.0);
+  geometry::Mesh both;
+  both.V.resize(bunny.vertex_count() + armadillo.vertex_count(), 3);
+  both.V << bunny.V, (armadillo.V.rowwise() + Eigen::RowVector3d(0, 1.5, 0));
+  both.F.resize(bunny.face_count() + armadillo.face_count(), 3);
+  both.F << bunny.F, (armadillo.F.array() + bunny.vertex_count()).matrix();
+  return both;
+}
+
 /// The redraw: silhouettes and quads from a part whose normals and edges are kept.
-void BM_ScrewEnvelopeBunny(benchmark::State& state) {
-  const sweep::EnvelopePart part(bench::cgal_mesh("bunny00.off", 1.0));
+void BM_ScrewEnvelope(benchmark::State& state) {
+  const sweep::EnvelopePart part(envelope_part(static_cast<int>(state.range(0))));
   const motion::ScrewMotion screw = bunny_screw();
   sweep::ScrewEnvelope envelope;
   for (auto _ : state) envelope = sweep::screw_envelope(part, std::span(&screw, 1));
@@ -90,18 +103,18 @@ void BM_ScrewEnvelopeBunny(benchmark::State& state) {
   state.counters["silhouette_segments"] = envelope.silhouette_segments;
   state.counters["steps"] = envelope.steps;
   state.counters["triangles"] = envelope.mesh.face_count();
-  state.SetLabel("bunny00, 1 m slide + 90° turn, one screw");
+  state.SetLabel(state.range(0) == 0 ? "bunny00, 1 m slide + 90° turn, one screw" : "bunny00 + armadillo, same screw");
 }
-BENCHMARK(BM_ScrewEnvelopeBunny)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.0);
+BENCHMARK(BM_ScrewEnvelope)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.0);
 
 /// Once per mesh edit: the normals, the edges and their convexity.
-void BM_ScrewEnvelopePartBunny(benchmark::State& state) {
-  const geometry::Mesh bunny = bench::cgal_mesh("bunny00.off", 1.0);
-  for (auto _ : state) benchmark::DoNotOptimize(sweep::EnvelopePart(bunny).edges().size());
-  state.counters["part_triangles"] = bunny.face_count();
-  state.SetLabel("bunny00 normals and edges");
+void BM_ScrewEnvelopePart(benchmark::State& state) {
+  const geometry::Mesh mesh = envelope_part(static_cast<int>(state.range(0)));
+  for (auto _ : state) benchmark::DoNotOptimize(sweep::EnvelopePart(mesh).edges().size());
+  state.counters["part_triangles"] = mesh.face_count();
+  state.SetLabel(state.range(0) == 0 ? "bunny00 normals and edges" : "bunny00 + armadillo normals and edges");
 }
-BENCHMARK(BM_ScrewEnvelopePartBunny)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.0);
+BENCHMARK(BM_ScrewEnvelopePart)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.0);
 
 }  // namespace
 
