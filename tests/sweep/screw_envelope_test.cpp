@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -193,6 +194,76 @@ TEST(ScrewEnvelope, TheOracleSeesAMissingEnvelope) {
   ends.F = ends.F.bottomRows(2 * box.face_count()).eval();
   ASSERT_GT(quad_triangles, 0);
   EXPECT_GT(escaping_rays(box, screws, ends, rng), 0);
+}
+
+double distance_to_segment(const Vector3d& x, const Vector3d& a, const Vector3d& b) {
+  const double u = std::clamp((x - a).dot(b - a) / (b - a).squaredNorm(), 0.0, 1.0);
+  return (x - (a + u * (b - a))).norm();
+}
+
+/// Against dense sampling of n·v on every face and convex edge, for random screws: every sampled
+/// point of a convex edge whose two faces move strictly in opposite directions lies on an edge
+/// segment of that edge, every edge segment's midpoint has faces of different signs, every face
+/// segment lies on its zero line, and the faces the sampling sees both signs on are as many as
+/// the face segments.
+TEST(ScrewEnvelope, SilhouetteMatchesDenseSampling) {
+  std::mt19937 rng(8);
+  const std::vector<geometry::Mesh> meshes = {star_prism(), geometry::make_sphere(1.0, 1)};
+  for (const geometry::Mesh& mesh : meshes)
+    for (int trial = 0; trial < 5; ++trial) {
+      const motion::ScrewMotion screw = random_track(rng, 1)[0];
+      Vector3d c, omega;
+      screw_velocity(screw, c, omega);
+      const EnvelopePart part(mesh);
+      const std::vector<SilhouetteSegment> segments = screw_silhouette(part, c, omega);
+      auto f = [&](int face, const Vector3d& q) { return part.normals().row(face).dot(c + omega.cross(q)); };
+      const double tiny = 1e-9 * (c.norm() + 2 * omega.norm()) * part.normals().rowwise().norm().maxCoeff();
+      for (int e = 0; e < static_cast<int>(part.edges().size()); ++e) {
+        const EnvelopePart::Edge& edge = part.edges()[e];
+        if (!edge.convex) continue;
+        for (int k = 0; k <= 100; ++k) {
+          const Vector3d x = vertex(mesh, edge.v0) + (k / 100.0) * (vertex(mesh, edge.v1) - vertex(mesh, edge.v0));
+          const double f0 = f(edge.f0, x), f1 = f(edge.f1, x);
+          if (!((f0 > tiny && f1 < -tiny) || (f0 < -tiny && f1 > tiny))) continue;
+          const bool covered = std::any_of(segments.begin(), segments.end(), [&](const SilhouetteSegment& s) {
+            return s.edge == e && distance_to_segment(x, s.a, s.b) < 1e-9;
+          });
+          EXPECT_TRUE(covered) << "edge " << e << " at " << k / 100.0;
+        }
+      }
+      int face_segments = 0;
+      for (const SilhouetteSegment& segment : segments) {
+        const Vector3d mid = (segment.a + segment.b) / 2;
+        if (segment.edge >= 0) {
+          const EnvelopePart::Edge& edge = part.edges()[segment.edge];
+          EXPECT_TRUE(edge.convex);
+          EXPECT_LE(f(edge.f0, mid) * f(edge.f1, mid), tiny * tiny);
+          continue;
+        }
+        ++face_segments;
+        bool on_some_zero_line = false;  // the face is not stored: some face's plane and zero line hold it
+        for (int face = 0; face < mesh.face_count() && !on_some_zero_line; ++face) {
+          const Vector3d n = part.normals().row(face).normalized().transpose();
+          const Vector3d a = vertex(mesh, mesh.F(face, 0));
+          on_some_zero_line = std::abs(n.dot(segment.a - a)) < 1e-9 && std::abs(n.dot(segment.b - a)) < 1e-9 &&
+                              std::abs(f(face, segment.a)) < tiny && std::abs(f(face, segment.b)) < tiny;
+        }
+        EXPECT_TRUE(on_some_zero_line);
+      }
+      int mixed_faces = 0;
+      for (int face = 0; face < mesh.face_count(); ++face) {
+        bool positive = false, negative = false;
+        const Vector3d a = vertex(mesh, mesh.F(face, 0)), b = vertex(mesh, mesh.F(face, 1)), cc = vertex(mesh, mesh.F(face, 2));
+        for (int i = 0; i <= 40; ++i)
+          for (int j = 0; i + j <= 40; ++j) {
+            const double value = f(face, a + (i / 40.0) * (b - a) + (j / 40.0) * (cc - a));
+            positive |= value > tiny;
+            negative |= value < -tiny;
+          }
+        mixed_faces += positive && negative;
+      }
+      EXPECT_EQ(face_segments, mixed_faces);
+    }
 }
 
 TEST(ScrewEnvelope, ConcaveEdgesGiveNoSilhouetteAndConvexOnesAreFound) {
