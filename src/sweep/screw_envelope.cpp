@@ -73,9 +73,10 @@ void screw_velocity(const motion::ScrewMotion& screw, Vector3d& c, Vector3d& ome
 std::vector<SilhouetteSegment> screw_silhouette(const EnvelopePart& part, const Vector3d& c, const Vector3d& omega) {
   const geometry::Mesh& mesh = part.mesh();
   const Eigen::MatrixX3d& normals = part.normals();
+  std::vector<SilhouetteSegment> segments;
+  if (mesh.vertex_count() == 0) return segments;
   const double radius = mesh.V.rowwise().norm().maxCoeff();
   const double speed = c.norm() + omega.norm() * radius;
-  std::vector<SilhouetteSegment> segments;
   if (speed == 0.0) return segments;
   Eigen::MatrixX3d velocity(mesh.vertex_count(), 3);
   for (int i = 0; i < mesh.vertex_count(); ++i) velocity.row(i) = (c + omega.cross(vertex(mesh, i))).transpose();

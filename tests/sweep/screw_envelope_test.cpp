@@ -279,6 +279,14 @@ TEST(ScrewEnvelope, ConcaveEdgesGiveNoSilhouetteAndConvexOnesAreFound) {
     }
 }
 
+TEST(ScrewEnvelope, AnEmptyPartHasAnEmptyEnvelope) {
+  const EnvelopePart part{geometry::Mesh{}};
+  const motion::ScrewMotion screw(Eigen::Isometry3d::Identity(), Eigen::Isometry3d(Eigen::Translation3d(1, 0, 0)));
+  const ScrewEnvelope envelope = screw_envelope(part, std::span(&screw, 1));
+  EXPECT_EQ(envelope.silhouette_segments, 0);
+  EXPECT_TRUE(envelope.mesh.empty());
+}
+
 TEST(ScrewEnvelope, TrackEnvelopeCoversEverySegment) {
   const geometry::Mesh box = geometry::make_box(Vector3d(1, 1, 1));
   std::vector<motion::ScrewKey> keys(3);
