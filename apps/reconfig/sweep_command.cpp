@@ -17,6 +17,7 @@
 #include "reconfig/geometry/mass_properties.h"
 #include "reconfig/geometry/save_mesh.h"
 #include "reconfig/sweep/carve_part.h"
+#include "screw_sweep.h"
 
 namespace reconfig::cli {
 namespace {
@@ -30,6 +31,7 @@ struct SweepOptions {
   std::string transition;
   std::string part;
   std::string relative_to;           // sweep: the frame (empty: world)
+  std::string method = "sdf";        // sweep: sdf or screw
   std::vector<std::string> carvers;  // carve: --by
   double t0 = 0.0, t1 = 1.0;
   double grid = 0.0;
@@ -78,6 +80,36 @@ void save_mesh_file(const fs::path& path, const geometry::Mesh& mesh) {
   else throw InputError(path.string(), "", "the output must be an .obj or .stl file");
 }
 
+/// `--method screw`: the envelope quads and the end poses, tolerance h (default: the part's box diagonal / 128).
+int run_screw_sweep(const SweepOptions& options, const scene::Reconfigurable& scene, int part,
+                    const sweep::RelativeMotion& motion) {
+  const auto start = std::chrono::steady_clock::now();
+  const geometry::Mesh& mesh = scene.parts[part].mesh;
+  const double diagonal = (mesh.V.colwise().maxCoeff() - mesh.V.colwise().minCoeff()).norm();
+  const double tolerance = options.grid > 0 ? options.grid : std::max(diagonal, 1e-9) / 128;
+  const ScrewSweep result = screw_sweep(mesh, motion, tolerance);
+  save_mesh_file(options.output, result.envelope.mesh);
+  if (options.json) {
+    nlohmann::ordered_json root = {{"transition", options.transition}, {"part", options.part},
+                                   {"relative_to", options.relative_to.empty() ? nlohmann::ordered_json(nullptr)
+                                                                               : nlohmann::ordered_json(options.relative_to)},
+                                   {"from", options.t0}, {"to", options.t1}, {"method", "screw"},
+                                   {"tolerance", tolerance}, {"screws", result.screws},
+                                   {"motion_error", result.motion_error},
+                                   {"silhouette_segments", result.envelope.silhouette_segments},
+                                   {"steps", result.envelope.steps}, {"triangles", result.envelope.mesh.face_count()}};
+    root["seconds"] = seconds_since(start);
+    root["output"] = options.output;
+    fmt::print("{}\n", root.dump(2));
+  } else {
+    fmt::print("{} swept over \"{}\" [{:g}, {:g}]: screw envelope of {} screws, {} silhouette segments, {} triangles; "
+               "wrote {}\n",
+               options.part, options.transition, options.t0, options.t1, result.screws,
+               result.envelope.silhouette_segments, result.envelope.mesh.face_count(), options.output);
+  }
+  return kExitOk;
+}
+
 int run_sweep(const SweepOptions& options) {
   const scene::Reconfigurable scene = scene::load_scene(options.scene, options.load);
   const int transition = find_transition(scene, options);
@@ -87,6 +119,8 @@ int run_sweep(const SweepOptions& options) {
   const fs::path output = options.output;
   if (output.extension() != ".obj" && output.extension() != ".stl")
     throw InputError(options.output, "", "the output must be an .obj or .stl file");
+  if (options.method == "screw")
+    return run_screw_sweep(options, scene, part, sweep::relative_motion(scene, transition, part, frame, options.t0, options.t1));
   ProgressBar bar("sweeping", !options.json && stderr_is_terminal());
   const InterruptGuard interrupt;
   sweep::SweptVolumeRequest request = sweep_request(options);
@@ -242,9 +276,11 @@ void add_sweep_command(CLI::App& app, int& exit_code) {
   add_motion_options(*command, *options);
   command->add_option("--part", options->part, "The moving part")->required();
   command->add_option("--relative-to", options->relative_to, "Sweep in this part's rest frame (default: world)");
-  command->add_option("--method", "How: sdf (a conservative closed mesh from a swept signed distance)")
-      ->check(CLI::IsMember({"sdf"}))
-      ->default_str("sdf");
+  command->add_option("--method", options->method,
+                      "How: sdf (a conservative closed mesh from a swept signed distance) or screw (the screw-motion "
+                      "envelope's quads and the end poses, for display)")
+      ->check(CLI::IsMember({"sdf", "screw"}))
+      ->capture_default_str();
   command->add_option("-o,--output", options->output, "Where to write the mesh (.obj or .stl)")->required();
   command->callback([options, &exit_code] { exit_code = run_sweep(*options); });
 }

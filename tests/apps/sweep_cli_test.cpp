@@ -30,11 +30,34 @@ TEST(SweepCli, WritesTheSweptVolumeAsAMesh) {
   EXPECT_GT(fs::file_size(out), 84u);
 }
 
+TEST(SweepCli, ScrewMethodWritesTheEnvelopeAndBothEndPoses) {
+  const fs::path out = testing::fresh_temp_dir() / "envelope.obj";
+  const auto run = run_reconfig("sweep " + bench_table() +
+                                " --transition unfold --part armrest_left --relative-to backrest --grid 0.01 "
+                                "--method screw --json -o " + out.string());
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const nlohmann::json result = nlohmann::json::parse(run.out);
+  EXPECT_EQ(result["method"], "screw");
+  EXPECT_DOUBLE_EQ(result["tolerance"].get<double>(), 0.01);
+  EXPECT_LE(result["motion_error"].get<double>(), 0.01);
+  const int screws = result["screws"].get<int>(), segments = result["silhouette_segments"].get<int>();
+  EXPECT_GT(screws, 10);
+  EXPECT_GE(segments, 4 * screws);  // a moving box shows at least a loop of four edges
+  // No piece turns by 5° (a point 0.19 from the armrest's center would move more than 0.01), so one
+  // step each: two triangles per segment, then the armrest (a 12-triangle box) at both ends.
+  EXPECT_EQ(result["steps"].get<int>(), screws);
+  EXPECT_EQ(result["triangles"].get<int>(), 2 * segments + 24);
+  EXPECT_GT(fs::file_size(out), 1000u);
+}
+
 TEST(SweepCli, BadInputIsExitTwo) {
   const fs::path out = testing::fresh_temp_dir() / "swept.obj";
   EXPECT_EQ(run_reconfig("sweep " + bench_table() + " --transition unfold --part nope -o " + out.string()).exit_code, 2);
   EXPECT_EQ(run_reconfig("sweep " + bench_table() + " --transition nope --part seat -o " + out.string()).exit_code, 2);
   EXPECT_EQ(run_reconfig("sweep " + bench_table() + " --transition unfold --part seat -o swept.ply").exit_code, 2);
+  EXPECT_EQ(run_reconfig("sweep " + bench_table() + " --transition unfold --part seat --method stamp -o " + out.string())
+                .exit_code,
+            2);
   EXPECT_EQ(run_reconfig("carve " + bench_table() + " --transition unfold --part seat --by seat -o " +
                          (out.parent_path() / "x.json").string())
                 .exit_code,
