@@ -67,11 +67,12 @@ std::vector<int> transitions_through(const scene::Reconfigurable& scene,
   return through;
 }
 
-/// The first transition through a moved state that has more collision intervals after a round
-/// than before it, as a reason to undo the round; empty when there is none.
+/// The first transition through one of the `moved` states that has more collision intervals
+/// after a round than before it, as a reason to undo the round; empty when there is none.
 std::string worsened_elsewhere(const scene::Reconfigurable& before, const scene::Reconfigurable& after,
+                               const std::map<std::string, std::vector<std::string>>& moved,
                                const AutoResolveRequest& request) {
-  for (int t : transitions_through(after, moved_states(before, after), request.transition)) {
+  for (int t : transitions_through(after, moved, request.transition)) {
     const std::size_t was = detect(before, request, t).size(), now = detect(after, request, t).size();
     if (now > was)
       return fmt::format("moving the states would give {} {} collision interval(s) instead of {}",
@@ -177,21 +178,27 @@ struct RoundOutcome {
   ResolveRound round;
 };
 
-/// The descent direction −g/|g| without the coordinates along which a small step already raises
-/// the objective: a part touching another (a drawer in its runners) has no contour yet, so the
-/// gradient cannot see that the smallest move into it makes one appear at full length (the
-/// contour energy jumps there). Each coordinate is probed at every length of `probes`; those
-/// that raise it at any are held for this step.
-Eigen::VectorXd feasible_direction(const Eigen::VectorXd& g, double e0, std::initializer_list<double> probes,
-                                   const std::function<double(const Eigen::VectorXd&)>& energy) {
+/// Holds (sets in `held`) the coordinates of the descent −g along which a small step already
+/// raises the objective above e0: a part touching another (a drawer in its runners) has no
+/// contour yet, so the gradient cannot see that the smallest move into it makes one appear at
+/// full length (the contour energy jumps there). Each coordinate not yet held is probed at every
+/// length of `probes`.
+void hold_rising_coordinates(const Eigen::VectorXd& g, double e0, std::initializer_list<double> probes,
+                             const std::function<double(const Eigen::VectorXd&)>& energy, std::vector<bool>& held) {
+  for (int k = 0; k < g.size(); ++k)
+    for (double probe : probes) {
+      if (held[k] || g[k] == 0) break;
+      Eigen::VectorXd z = Eigen::VectorXd::Zero(g.size());
+      z[k] = g[k] < 0 ? probe : -probe;
+      if (energy(z) > e0) held[k] = true;
+    }
+}
+
+/// The descent direction −g/|g| without the held coordinates, normalized (zero when all are).
+Eigen::VectorXd feasible_direction(const Eigen::VectorXd& g, const std::vector<bool>& held) {
   Eigen::VectorXd d = -g / g.norm();
   for (int k = 0; k < d.size(); ++k)
-    for (double probe : probes) {
-      if (d[k] == 0) break;
-      Eigen::VectorXd z = Eigen::VectorXd::Zero(d.size());
-      z[k] = d[k] > 0 ? probe : -probe;
-      if (energy(z) > e0) d[k] = 0;
-    }
+    if (held[k]) d[k] = 0;
   const double norm = d.norm();
   return norm > 0 ? Eigen::VectorXd(d / norm) : d;
 }
@@ -215,10 +222,13 @@ scene::Reconfigurable descend_with(scene::Reconfigurable scene, ShapeCache& shap
       return d.norm() > 0 ? detail::line_search([&](double a) { return at(a * d); }, energy.energy, size, clearance)
                           : 0.0;
     };
-    Eigen::VectorXd d = feasible_direction(g, energy.energy, {1e-5 * size}, at);
+    std::vector<bool> held(g.size(), false);
+    hold_rising_coordinates(g, energy.energy, {1e-5 * size}, at, held);
+    Eigen::VectorXd d = feasible_direction(g, held);
     double alpha = search(d);
     if (alpha == 0) {  // a contact may lie a little farther than the probe looked: probe farther
-      d = feasible_direction(g, energy.energy, {1e-5 * size, 1e-4 * size, 1e-3 * size}, at);
+      hold_rising_coordinates(g, energy.energy, {1e-4 * size, 1e-3 * size}, at, held);
+      d = feasible_direction(g, held);
       alpha = search(d);
     }
     if (alpha == 0) break;
@@ -279,10 +289,11 @@ RoundOutcome descend(const scene::Reconfigurable& original, ShapeCache& shapes, 
 /// when that gave another transition through those states more collision intervals.
 void undo_if_worse_elsewhere(const scene::Reconfigurable& before, const AutoResolveRequest& request,
                              RoundOutcome& outcome) {
-  for (auto& [state, parts] : moved_states(before, outcome.scene))
-    for (std::string& part : parts) outcome.round.moved_states.push_back(std::move(part));
-  if (outcome.round.moved_states.empty()) return;
-  outcome.round.undone_because = worsened_elsewhere(before, outcome.scene, request);
+  const auto moved = moved_states(before, outcome.scene);
+  for (const auto& [state, parts] : moved)
+    outcome.round.moved_states.insert(outcome.round.moved_states.end(), parts.begin(), parts.end());
+  if (moved.empty()) return;
+  outcome.round.undone_because = worsened_elsewhere(before, outcome.scene, moved, request);
   if (outcome.round.undone_because.empty()) return;
   outcome.scene = before;
   outcome.round.energy_after = outcome.round.energy_before;
