@@ -46,9 +46,8 @@
 #include "scenes.h"
 
 #ifdef RECONFIG_HAVE_FCL
-#include <fcl/broadphase/broadphase_dynamic_AABB_tree.h>
-#include <fcl/geometry/bvh/BVH_model.h>
-#include <fcl/narrowphase/collision.h>
+#include "fcl_baselines.h"
+#include "guaranteed_steps.h"
 #endif
 
 namespace {
@@ -247,93 +246,45 @@ BENCHMARK(BM_ReferenceCheck)->Arg(kGallery)->ArgName("scene")->Unit(benchmark::k
     ->MeasureProcessCPUTime()->Iterations(1);
 
 #ifdef RECONFIG_HAVE_FCL
-/// FCL 0.7's own BVHs (BVHModel<OBBRSS>, built once per part) and the engine's result, per scene.
-struct FclModels {
-  std::vector<std::shared_ptr<fcl::CollisionGeometryd>> geometry;
-  std::vector<collision::CollisionInterval> engine_groups;  ///< 28-DOP, 1 mm: for the miss count
+/// FCL 0.7's own BVHs (built once per part, not timed), the engine's result (28-DOP, 1 mm: for
+/// the comparisons) and the samples that make the engine's promise, per scene.
+struct FclFixture {
+  FclParts parts;
+  std::vector<collision::CollisionInterval> engine_groups;
+  GuaranteedSamples guaranteed;  ///< no vertex moves more than 1 mm between two samples
+  /// The time the fastest vertex takes to move by the tolerance: how far apart in time two
+  /// answers may be and still agree.
+  double time_tolerance = 0;
 };
 
-const FclModels& fcl_models(int which) {
-  static std::map<int, FclModels> cache;
+const FclFixture& fcl_fixture(int which) {
+  static std::map<int, FclFixture> cache;
   static std::mutex mutex;
   std::lock_guard lock(mutex);
   auto it = cache.find(which);
   if (it != cache.end()) return it->second;
   const Fixture& f = fixture(which);
-  FclModels models;
-  for (const auto& part : f.scene.parts) {
-    std::vector<fcl::Vector3d> vertices;
-    std::vector<fcl::Triangle> triangles;
-    for (int v = 0; v < part.mesh.V.rows(); ++v) vertices.emplace_back(part.mesh.V.row(v).transpose());
-    for (int t = 0; t < part.mesh.F.rows(); ++t) triangles.emplace_back(part.mesh.F(t, 0), part.mesh.F(t, 1), part.mesh.F(t, 2));
-    auto model = std::make_shared<fcl::BVHModel<fcl::OBBRSSd>>();
-    model->beginModel(static_cast<int>(triangles.size()), static_cast<int>(vertices.size()));
-    model->addSubModel(vertices, triangles);
-    model->endModel();
-    model->computeLocalAABB();
-    models.geometry.push_back(std::move(model));
-  }
-  collision::SpacetimeDetector detector(f.transition, {});
+  FclFixture fcl;
+  fcl.parts = fcl_parts(f.scene);
+  collision::DetectorOptions options;
+  options.tolerance = 1e-3;
+  collision::SpacetimeDetector detector(f.transition, options);
   detector.detect(f.scene, f.trees);
-  models.engine_groups = detector.groups();
-  return cache.emplace(which, std::move(models)).first->second;
+  fcl.engine_groups = detector.groups();
+  fcl.guaranteed = guaranteed_samples(f.scene, f.transition, options.tolerance);
+  fcl.time_tolerance = 1.0 / static_cast<double>(fcl.guaranteed.times.size() - 1);
+  return cache.emplace(which, std::move(fcl)).first->second;
 }
 
-/// What FCL finds at one time: the intersecting pairs of parts, and their triangle pairs.
-struct FclSample {
-  std::vector<std::pair<int, int>> pairs;
-  long triangle_pairs = 0;
-};
-
-/// Every pair of parts that FCL finds intersecting at time t: a broad phase over the parts'
-/// AABBs (DynamicAABBTree), then FCL's BVH test, which stops at the first intersecting triangle
-/// pair, or with `all_contacts` goes on to every intersecting triangle pair (what the engine
-/// reports over time, and what the reference check reports per sample).
-FclSample fcl_sample(const Fixture& f, const FclModels& models, double t, bool all_contacts) {
-  const int n = static_cast<int>(f.scene.parts.size());
-  std::vector<std::unique_ptr<fcl::CollisionObjectd>> objects;
-  fcl::DynamicAABBTreeCollisionManagerd manager;
-  for (int p = 0; p < n; ++p) {
-    const motion::Pose pose = f.scene.pose_at(f.transition, p, t);
-    const Eigen::Isometry3d M = pose.to_isometry(f.scene.parts[p].center);
-    auto object = std::make_unique<fcl::CollisionObjectd>(models.geometry[p], M.linear(), M.translation());
-    object->setUserData(reinterpret_cast<void*>(static_cast<std::intptr_t>(p)));
-    manager.registerObject(object.get());
-    objects.push_back(std::move(object));
-  }
-  manager.setup();
-  struct Data {
-    FclSample sample;
-    bool all_contacts;
-  } data{{}, all_contacts};
-  manager.collide(&data, [](fcl::CollisionObjectd* o1, fcl::CollisionObjectd* o2, void* user) {
-    auto& d = *static_cast<Data*>(user);
-    fcl::CollisionRequestd request;  // default: one contact, i.e. whether they intersect
-    if (d.all_contacts) request.num_max_contacts = std::numeric_limits<int>::max();
-    fcl::CollisionResultd result;
-    if (fcl::collide(o1, o2, request, result) > 0) {
-      const int a = static_cast<int>(reinterpret_cast<std::intptr_t>(o1->getUserData()));
-      const int b = static_cast<int>(reinterpret_cast<std::intptr_t>(o2->getUserData()));
-      d.sample.pairs.emplace_back(std::min(a, b), std::max(a, b));
-      d.sample.triangle_pairs += static_cast<long>(result.numContacts());
-    }
-    return false;  // go on: every colliding pair
-  });
-  std::sort(data.sample.pairs.begin(), data.sample.pairs.end());
-  return data.sample;
-}
-
-/// FCL discrete collision at every one of the engine's proxy sample times, parallel over the
-/// samples like the engine and the reference check. Counters: samples with a collision, (sample,
-/// pair) hits, and how many of those no engine contact of the same pair covers (misses).
-void fcl_per_step(benchmark::State& state, bool all_contacts) {
-  const int which = static_cast<int>(state.range(0));
-  const Fixture& f = fixture(which);
-  const FclModels& models = fcl_models(which);
-  const int samples = static_cast<int>(f.sample_times.size());
+/// FCL discrete collision at each of `times`, parallel over them like the engine and the
+/// reference check. Counters: samples with a collision, (sample, pair) hits, and how many of
+/// those no engine interval of the same pair covers within `slack` in time (misses).
+void fcl_discrete(benchmark::State& state, const Fixture& f, const FclFixture& fcl, const std::vector<double>& times,
+                  bool all_contacts, double slack) {
+  const int samples = static_cast<int>(times.size());
   std::vector<FclSample> hits(samples);
   for (auto _ : state) {
-    tbb::parallel_for(0, samples, [&](int s) { hits[s] = fcl_sample(f, models, f.sample_times[s], all_contacts); });
+    tbb::parallel_for(0, samples, [&](int s) { hits[s] = fcl_sample(f.scene, f.transition, fcl.parts, times[s], all_contacts); });
     benchmark::DoNotOptimize(hits.data());
   }
   long colliding_samples = 0, pair_hits = 0, missed = 0, triangle_pairs = 0;
@@ -342,26 +293,71 @@ void fcl_per_step(benchmark::State& state, bool all_contacts) {
     triangle_pairs += hits[s].triangle_pairs;
     for (const auto& [a, b] : hits[s].pairs) {
       ++pair_hits;
-      const double t = f.sample_times[s];
-      const bool covered = std::any_of(models.engine_groups.begin(), models.engine_groups.end(), [&](const auto& g) {
-        return g.parts[0] == a && g.parts[1] == b && g.t0 <= t + 1e-9 && t - 1e-9 <= g.t1;
+      const double t = times[s];
+      const bool covered = std::any_of(fcl.engine_groups.begin(), fcl.engine_groups.end(), [&](const auto& g) {
+        return g.parts[0] == a && g.parts[1] == b && g.t0 <= t + slack && t - slack <= g.t1;
       });
       missed += covered ? 0 : 1;
     }
   }
   describe(state, f);
+  state.counters["fcl_samples"] = samples;
   state.counters["colliding_samples"] = static_cast<double>(colliding_samples);
   state.counters["pair_hits"] = static_cast<double>(pair_hits);
   state.counters["missed_by_engine"] = static_cast<double>(missed);
   if (all_contacts) state.counters["triangle_pairs"] = static_cast<double>(triangle_pairs);
 }
 
-/// The baseline: FCL's yes/no answer per pair of parts at every sample time.
-void BM_FclPerStep(benchmark::State& state) { fcl_per_step(state, false); }
+/// FCL's yes/no answer per pair of parts at each of the engine's ~33 proxy sample times: the
+/// same time resolution, but no guarantee between the samples.
+void BM_FclPerStep(benchmark::State& state) {
+  const int which = static_cast<int>(state.range(0));
+  fcl_discrete(state, fixture(which), fcl_fixture(which), fixture(which).sample_times, false, 1e-9);
+}
 
-/// FCL asked for every intersecting triangle pair at every sample time (closer to what the
-/// engine computes: all contacts, for the collision boxes).
-void BM_FclAllContactsPerStep(benchmark::State& state) { fcl_per_step(state, true); }
+/// The same, asked for every intersecting triangle pair (closer to what the engine computes).
+void BM_FclAllContactsPerStep(benchmark::State& state) {
+  const int which = static_cast<int>(state.range(0));
+  fcl_discrete(state, fixture(which), fcl_fixture(which), fixture(which).sample_times, true, 1e-9);
+}
+
+/// FCL at the engine's guarantee: discrete collision at a uniform step so small that no vertex
+/// moves more than the tolerance (1 mm) between two samples (`guaranteed_samples`), whether
+/// each pair intersects (all:0) or every intersecting triangle pair (all:1).
+void BM_FclGuaranteedStep(benchmark::State& state) {
+  const int which = static_cast<int>(state.range(0));
+  const FclFixture& fcl = fcl_fixture(which);
+  fcl_discrete(state, fixture(which), fcl, fcl.guaranteed.times, state.range(1) != 0, fcl.time_tolerance);
+  state.counters["max_displacement"] = fcl.guaranteed.max_displacement;
+}
+
+/// FCL's continuous collision per pair of parts over each of the engine's proxy steps (screw
+/// motion between the step's end poses, conservative advancement): the first contact of each
+/// step, compared with the engine's intervals.
+void BM_FclContinuous(benchmark::State& state) {
+  const int which = static_cast<int>(state.range(0));
+  const Fixture& f = fixture(which);
+  const FclFixture& fcl = fcl_fixture(which);
+  FclCcdResult result;
+  for (auto _ : state) {
+    result = fcl_ccd_first_contacts(f.scene, f.transition, fcl.parts, f.sample_times);
+    benchmark::DoNotOptimize(result.contacts.data());
+  }
+  const CcdComparison c = compare_with_engine(result.contacts, fcl.engine_groups, fcl.time_tolerance);
+  describe(state, f);
+  state.counters["pair_steps"] = static_cast<double>(result.pair_steps);
+  state.counters["first_contacts"] = static_cast<double>(result.contacts.size());
+  state.counters["engine_intervals"] = c.intervals;
+  state.counters["starts_found"] = c.starts_found;
+  state.counters["starts_missed"] = c.starts_missed;
+  state.counters["intervals_missed"] = c.intervals_missed;
+  state.counters["ends_unreported"] = c.ends_unreported;
+  state.counters["extra_contacts"] = c.extra_contacts;
+  state.counters["pairs"] = c.pairs;
+  state.counters["pairs_missed"] = c.pairs_missed;
+  state.counters["first_contact_error"] = c.first_contact_error;
+  state.counters["time_tolerance"] = fcl.time_tolerance;
+}
 
 BENCHMARK(BM_FclPerStep)
     ->ArgsProduct({{kElephant, kBunnyArmadillo, kEight, kKitchenHasty, kKitchen}})
@@ -384,6 +380,31 @@ BENCHMARK(BM_FclAllContactsPerStep)
     ->UseRealTime()
     ->MeasureProcessCPUTime()
     ->Iterations(1);
+// Thousands of samples: the slow scenes run once per measurement. The gallery only asks
+// whether the parts intersect (every contact at ~15 K samples of 1 M triangles takes minutes).
+BENCHMARK(BM_FclGuaranteedStep)
+    ->ArgsProduct({{kElephant, kEight, kKitchenHasty, kKitchen}, {0, 1}})
+    ->ArgNames({"scene", "all"})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MeasureProcessCPUTime();
+BENCHMARK(BM_FclGuaranteedStep)
+    ->ArgsProduct({{kBunnyArmadillo}, {0, 1}})
+    ->ArgNames({"scene", "all"})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MeasureProcessCPUTime()
+    ->Iterations(1);
+BENCHMARK(BM_FclGuaranteedStep)->Args({kGallery, 0})->ArgNames({"scene", "all"})->Unit(benchmark::kMillisecond)->UseRealTime()
+    ->MeasureProcessCPUTime()->Iterations(1);
+BENCHMARK(BM_FclContinuous)
+    ->ArgsProduct({{kElephant, kBunnyArmadillo, kEight, kKitchenHasty, kKitchen}})
+    ->ArgName("scene")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MeasureProcessCPUTime();
+BENCHMARK(BM_FclContinuous)->Arg(kGallery)->ArgName("scene")->Unit(benchmark::kMillisecond)->UseRealTime()
+    ->MeasureProcessCPUTime()->Iterations(1);
 #endif
 
 }  // namespace
