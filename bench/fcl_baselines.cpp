@@ -71,13 +71,12 @@ std::vector<bool> moving_parts(const std::vector<std::vector<Eigen::Isometry3d>>
   return moving;
 }
 
-template <typename BV>
-std::shared_ptr<fcl::BVHModel<BV>> fcl_model(const geometry::Mesh& mesh) {
+std::shared_ptr<fcl::BVHModel<fcl::OBBRSSd>> obbrss_model(const geometry::Mesh& mesh) {
   std::vector<fcl::Vector3d> vertices;
   std::vector<fcl::Triangle> triangles;
   for (int v = 0; v < mesh.V.rows(); ++v) vertices.emplace_back(mesh.V.row(v).transpose());
   for (int t = 0; t < mesh.F.rows(); ++t) triangles.emplace_back(mesh.F(t, 0), mesh.F(t, 1), mesh.F(t, 2));
-  auto model = std::make_shared<fcl::BVHModel<BV>>();
+  auto model = std::make_shared<fcl::BVHModel<fcl::OBBRSSd>>();
   model->beginModel(static_cast<int>(triangles.size()), static_cast<int>(vertices.size()));
   model->addSubModel(vertices, triangles);
   model->endModel();
@@ -92,15 +91,15 @@ fcl::InterpMotion<double> interpolated_motion(const Eigen::Isometry3d& from, con
   return {from.linear(), from.translation(), to.linear(), to.translation(), center};
 }
 
-/// FCL's continuous collision of two RSS trees over one step: the time of first contact in
+/// FCL's continuous collision of two OBBRSS trees over one step: the time of first contact in
 /// [0, 1] of the step, or none.
 std::optional<double> first_contact(const fcl::CollisionGeometryd& a, const fcl::InterpMotion<double>& motion_a,
                                     const fcl::CollisionGeometryd& b, const fcl::InterpMotion<double>& motion_b) {
-  using Model = fcl::BVHModel<fcl::RSSd>;
+  using Model = fcl::BVHModel<fcl::OBBRSSd>;
   fcl::CollisionRequestd request;
   fcl::CollisionResultd result;
   double toc = 1;
-  const bool hit = fcl::detail::conservativeAdvancementMeshOriented<fcl::RSSd, fcl::detail::MeshConservativeAdvancementTraversalNodeRSS<double>>(
+  const bool hit = fcl::detail::conservativeAdvancementMeshOriented<fcl::OBBRSSd, fcl::detail::MeshConservativeAdvancementTraversalNodeOBBRSS<double>>(
       static_cast<const Model&>(a), &motion_a, static_cast<const Model&>(b), &motion_b, request, result, toc);
   return hit ? std::optional<double>(toc) : std::nullopt;
 }
@@ -110,8 +109,7 @@ std::optional<double> first_contact(const fcl::CollisionGeometryd& a, const fcl:
 FclParts fcl_parts(const scene::Reconfigurable& scene) {
   FclParts parts;
   for (const auto& part : scene.parts) {
-    parts.geometry.push_back(fcl_model<fcl::OBBRSSd>(part.mesh));
-    parts.swept.push_back(fcl_model<fcl::RSSd>(part.mesh));
+    parts.geometry.push_back(obbrss_model(part.mesh));
   }
   return parts;
 }
@@ -158,7 +156,7 @@ FclCcdResult fcl_ccd_first_contacts(const scene::Reconfigurable& scene, int tran
   tbb::parallel_for(std::size_t{0}, candidates.size(), [&](std::size_t i) {
     const auto [a, b, k] = candidates[i];
     const std::optional<double> first =
-        first_contact(*parts.swept[a], interpolated_motion(poses[k][a], poses[k + 1][a], scene.parts[a].center), *parts.swept[b],
+        first_contact(*parts.geometry[a], interpolated_motion(poses[k][a], poses[k + 1][a], scene.parts[a].center), *parts.geometry[b],
                       interpolated_motion(poses[k][b], poses[k + 1][b], scene.parts[b].center));
     if (first) toc[i] = times[k] + *first * (times[k + 1] - times[k]);
   });

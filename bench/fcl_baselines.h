@@ -27,12 +27,9 @@
 
 namespace reconfig::bench {
 
-/// FCL's own bounding volume hierarchies of every part, in its body frame: `BVHModel<OBBRSS>`
-/// for discrete collision (FCL's recommended volume), `BVHModel<RSS>` for continuous collision
-/// (the mesh–mesh conservative advancement that works in FCL 0.7; OBBRSS crashes in it).
+/// FCL's own bounding volume hierarchy (`BVHModel<OBBRSS>`) of every part, in its body frame.
 struct FclParts {
   std::vector<std::shared_ptr<fcl::CollisionGeometryd>> geometry;
-  std::vector<std::shared_ptr<fcl::CollisionGeometryd>> swept;
 };
 FclParts fcl_parts(const scene::Reconfigurable& scene);
 
@@ -59,7 +56,7 @@ struct FclFirstContact {
 /// FCL's continuous collision over every step of `times` (sorted, from 0 to 1) for every pair
 /// of parts of which one moves: each part's center moves linearly between its poses at the
 /// step's ends while the part turns about it at constant angular velocity (`fcl::InterpMotion`),
-/// solved by FCL's mesh–mesh conservative advancement over RSS trees, for the pairs whose swept
+/// solved by FCL's mesh–mesh conservative advancement over the OBBRSS trees, for the pairs whose swept
 /// bounding spheres' boxes meet (a conservative broad phase for that motion). Parallel over the pairs and steps.
 struct FclCcdResult {
   std::vector<FclFirstContact> contacts;  ///< sorted by (a, b, step)

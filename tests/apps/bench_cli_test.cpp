@@ -54,9 +54,10 @@ TEST_F(BenchCli, CollisionSuiteSummarizesEachSceneWithTheBaselineRatios) {
   for (const char* column : {"engine_ns", "dop8_ns", "dop80_ns", "all_contacts_ns", "update_ns", "reference_ns"})
     EXPECT_GT(row[column].get<double>(), 0.0) << column;
   EXPECT_GT(row["engine_vs_reference"].get<double>(), 0.0);
-  // Engine vs reference for each of the three DOP families and for every contact, and vs FCL
-  // when it was found.
-  EXPECT_EQ(report["ratios"].size(), fcl ? 8u : 4u);
+  // Engine vs reference for each of the three DOP families and for every contact, and when FCL
+  // was found vs FCL at the proxy times, at the same guarantee (whether / every contact) and
+  // continuous.
+  EXPECT_EQ(report["ratios"].size(), fcl ? 20u : 4u);
   if (fcl) {
     EXPECT_GT(row["engine_vs_fcl"].get<double>(), 0.0);
     // By CPU time over all threads too: the engine's own CPU time, and the ratio of the two.
@@ -64,6 +65,15 @@ TEST_F(BenchCli, CollisionSuiteSummarizesEachSceneWithTheBaselineRatios) {
     EXPECT_DOUBLE_EQ(row["engine_vs_fcl_cpu"].get<double>(), row["fcl_cpu_ns"].get<double>() / row["engine_cpu_ns"].get<double>());
     EXPECT_EQ(row["fcl_colliding_samples"].get<double>(), 0.0);  // collision-free
     EXPECT_EQ(row["fcl_missed_by_engine"].get<double>(), 0.0);
+    // At the same guarantee: thousands of samples (parts move by metres at 1 mm), none colliding.
+    EXPECT_GT(row["fcl_guaranteed_samples"].get<double>(), 1000.0);
+    EXPECT_EQ(row["fcl_guaranteed_colliding_samples"].get<double>(), 0.0);
+    EXPECT_GT(row["engine_vs_fcl_guaranteed"].get<double>(), 0.0);
+    EXPECT_GT(row["engine_vs_fcl_guaranteed_all_contacts"].get<double>(), 0.0);
+    EXPECT_GT(row["engine_vs_fcl_ccd"].get<double>(), 0.0);
+    EXPECT_GT(row["ccd_pair_steps"].get<double>(), 0.0);
+    EXPECT_EQ(row["ccd_engine_intervals"].get<double>(), 0.0);
+    EXPECT_EQ(row["ccd_extra_contacts"].get<double>(), 0.0);
   } else {
     EXPECT_TRUE(row["engine_vs_fcl"].is_null());
     EXPECT_TRUE(row["engine_vs_fcl_cpu"].is_null());
@@ -72,10 +82,16 @@ TEST_F(BenchCli, CollisionSuiteSummarizesEachSceneWithTheBaselineRatios) {
 
 TEST_F(BenchCli, CollisionTableForPeople) {
   if (!std::filesystem::exists(testing::binary_dir() / "bin" / "bench_collision")) GTEST_SKIP() << "no bench_collision";
-  const auto run = testing::run_reconfig("bench collision --filter 'scene:4/' --min-time 0.01");
+  // The kitchen without its slow baselines, and FCL at the guarantee on the eight (quick).
+  const auto run = testing::run_reconfig(
+      "bench collision --filter 'BM_(FullDetection|ReferenceCheck|FclPerStep)/scene:4/|BM_FclGuaranteedStep/scene:2/all:0/' "
+      "--min-time 0.01");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_NE(run.out.find("per scene"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("engine/FCL"), std::string::npos) << run.out;
+  if (run.out.find("BM_FclGuaranteedStep") != std::string::npos) {
+    EXPECT_NE(run.out.find("FCL at the same guarantee"), std::string::npos) << run.out;
+  }
   EXPECT_NE(run.out.find("kitchen, open"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("than BM_ReferenceCheck/scene:4"), std::string::npos) << run.out;
 }
