@@ -43,8 +43,9 @@ def main(path):
     print(f"<!-- {context.get('date', '')}, {context.get('num_cpus', '?')} CPUs, "
           f"load average {'?' if load[0] is None else f'{load[0]:.2f}'} at the start -->")
     print("| # | scene | triangles | parts | samples | engine 28-DOP | 8-DOP | 80-DOP | every contact | update after one key edit "
-          "| reference | FCL 0.7 | FCL 0.7, all contacts | engine / reference | engine / FCL | engine / FCL, CPU "
-          "| engine / FCL all contacts | FCL colliding samples (missed by engine) |")
+          "| reference | FCL 0.7 at the proxy times (no guarantee) | FCL 0.7 at the proxy times, all contacts "
+          "| engine / reference | engine / FCL at the proxy times | engine / FCL at the proxy times, CPU "
+          "| engine / FCL at the proxy times, all contacts | FCL colliding samples (missed by engine) |")
     print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     for row in report["summary"]:
         fcl_hits = row.get("fcl_colliding_samples")
