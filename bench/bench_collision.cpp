@@ -21,8 +21,13 @@
 // configure time) at the same time resolution as the engine's proxies: the number of distinct
 // sample times of all parts' proxies (28-DOP, 1 mm). FCL gets the engine's exact sample times,
 // the reference check (evenly spaced samples only) the same number of them. FCL is asked twice:
-// whether each pair of parts intersects (BM_FclPerStep, the baseline of the issue), and for every
-// intersecting triangle pair (BM_FclAllContactsPerStep, the engine's and the reference's output).
+// whether each pair of parts intersects (BM_FclPerStep), and for every intersecting triangle
+// pair (BM_FclAllContactsPerStep, the engine's and the reference's output); neither gives any
+// guarantee between the samples. The baselines that make the engine's promise (fcl_baselines.h):
+// FCL discrete at the step where no vertex moves more than the tolerance between two samples
+// (BM_FclGuaranteedStep, all:0 whether / all:1 every contact, with the samples it needed), and
+// FCL's continuous collision per pair of parts over each proxy step (BM_FclContinuous: first
+// contacts only, counted against the engine's intervals: what it misses).
 // Every benchmark reports wall-clock time ("Time") and the whole process's CPU time over all its
 // threads ("CPU"), which the virtual machine's steal time does not inflate.
 
@@ -30,10 +35,8 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <limits>
 #include <filesystem>
 #include <map>
-#include <memory>
 #include <mutex>
 #include <set>
 
