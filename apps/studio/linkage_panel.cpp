@@ -404,12 +404,37 @@ void LinkagePanel::draw_controls(Studio& studio) {
   }
   ImGui::SameLine();
   if (ImGui::Button("Fit")) fit(studio);
-  ImGui::SameLine();
   float radius = static_cast<float>(soft_radius);
   ImGui::SetNextItemWidth(80);
   if (ImGui::DragFloat("curve radius", &radius, static_cast<float>(view_size_ / 200), 0.0f,
                        static_cast<float>(view_size_), "%.1f"))
     soft_radius = std::max(0.0f, radius);
+  draw_transform_row(studio);
+}
+
+void LinkagePanel::draw_transform_row(Studio& studio) {
+  const auto& points = editor_.linkage().tracking_points;
+  if (points.empty()) return;
+  transform_point_ = std::clamp(transform_point_, 0, static_cast<int>(points.size()) - 1);
+  ImGui::SetNextItemWidth(70);
+  if (ImGui::BeginCombo("##transform-point", points[transform_point_].name.c_str())) {
+    for (int p = 0; p < static_cast<int>(points.size()); ++p)
+      if (ImGui::Selectable(points[p].name.c_str(), p == transform_point_)) transform_point_ = p;
+    ImGui::EndCombo();
+  }
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(190);
+  ImGui::InputFloat4("##transform", transform_draft_, "%.2f");
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("scale, turn (degrees), move x, move y of the target curve");
+  ImGui::SameLine();
+  if (!ImGui::Button("Transform")) return;
+  if (!(transform_draft_[0] > 0)) {
+    studio.set_status("transform the target: the scale must be > 0", true);
+    return;
+  }
+  editor_.transform_target(transform_point_, transform_draft_[0], radians(transform_draft_[1]),
+                           {transform_draft_[2], transform_draft_[3]});
+  apply(studio, editor_.fit(), fmt::format("transform the curve of {}", points[transform_point_].name));
 }
 
 void LinkagePanel::draw_canvas(Studio& studio, ImVec2 size) {

@@ -107,6 +107,9 @@ class LinkagePanel {
   void remember_opened();
   void fit_view();
   void draw_controls(Studio& studio);
+  /// The row that scales, turns and moves a tracking point's target curve (LinkEdit's global
+  /// transformation mode), then fits.
+  void draw_transform_row(Studio& studio);
   void draw_canvas(Studio& studio, ImVec2 size);
   void handle_mouse(Studio& studio, const Eigen::Matrix2Xd& X);
   void finish_joint_drag(Studio& studio);
@@ -138,6 +141,9 @@ class LinkagePanel {
   std::optional<CurveDrag> curve_drag_;
   std::optional<std::pair<int, Eigen::Vector2d>> last_drag_;
   float enclosure_draft_[4] = {0, 0, 0, 0};
+  /// The target transform row: which tracking point, and scale, degrees, tx, ty.
+  int transform_point_ = 0;
+  float transform_draft_[4] = {1, 0, 0, 0};
   bool show_open_dialog_ = false;
   std::string open_path_;
 };

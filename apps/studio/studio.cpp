@@ -162,8 +162,8 @@ void Studio::frame(std::chrono::steady_clock::time_point now) {
   draw_state_graph();
   draw_inspector();
   draw_viewport();
-  linkage_panel_.draw(*this);
   draw_timeline();
+  linkage_panel_.draw(*this);  // after the timeline: a linkage opened alone covers it
   pip_.update(*this);
   pip_.draw(*this);
   draw_status_bar();
