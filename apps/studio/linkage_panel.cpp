@@ -162,6 +162,9 @@ void LinkagePanel::sync(Studio& studio) {
     editor_.reset_choices();
     remember_opened();
     fit_view();
+    if (const std::string problem = editor_.motion_problem(); !problem.empty())
+      studio.set_status(fmt::format("{} — the linkage of {}: {}", studio.status(),
+                                    document.scene().transitions[t].name, problem));
   }
   synced_transition_ = t;
   synced_version_ = document.version();
