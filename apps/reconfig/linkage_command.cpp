@@ -13,6 +13,7 @@
 #include "command.h"
 #include "reconfig/common/input_error.h"
 #include "reconfig/common/write_atomically.h"
+#include "reconfig/linkage/curve_edit.h"
 #include "reconfig/linkage/linkage_edit.h"
 #include "reconfig/linkage/linkage_file.h"
 #include "reconfig/linkage/linkage_svg.h"
@@ -107,6 +108,7 @@ struct EditOptions {
   std::string file, output;
   std::vector<std::vector<std::string>> drags;
   std::vector<std::string> keep;
+  std::vector<std::vector<std::string>> curve_drags, curve_transforms;
   std::vector<double> envelope;
   std::optional<double> at;  // degrees: drag joints of the configuration at this motor angle
   int samples = 72, iterations = 200;
@@ -128,6 +130,36 @@ double parse_number(const std::string& text, const std::string& what) {
   } catch (const std::exception&) {
   }
   throw InputError("", what, fmt::format("\"{}\" is not a number", text));
+}
+
+// The target curves of --curve-drag (soft selection) and --curve-transform (curve_edit.h), each
+// made from the point's own motion curve at the edit's sample angles.
+void add_target_curves(const Linkage& linkage, const EditOptions& options, const std::vector<double>& angles,
+                       EditObjectives& objectives) {
+  const bool closed = motion_range(SymbolicKinematics(linkage, order_joints(linkage))).full_rotation;
+  for (const auto& drag : options.curve_drags) {
+    const int joint = joint_or_tracking_point(linkage, options.file, drag[0]);
+    const double index = parse_number(drag[1], "--curve-drag INDEX"), radius = parse_number(drag[4], "--curve-drag RADIUS");
+    if (index != std::floor(index) || index < 0 || index >= static_cast<double>(angles.size()))
+      throw InputError("", "--curve-drag", fmt::format("INDEX must be a sample index 0 … {}, not {}", angles.size() - 1, drag[1]));
+    if (!(radius >= 0)) throw InputError("", "--curve-drag", "RADIUS must be ≥ 0");
+    const Eigen::Vector2d displacement(parse_number(drag[2], "--curve-drag DX"), parse_number(drag[3], "--curve-drag DY"));
+    objectives.trajectories.push_back(
+        {joint, soft_drag_curve(joint_trajectory(linkage, joint, angles), static_cast<int>(index), displacement, radius, closed),
+         10.0});
+  }
+  for (const auto& transform : options.curve_transforms) {
+    const int joint = joint_or_tracking_point(linkage, options.file, transform[0]);
+    const double scale = parse_number(transform[1], "--curve-transform SCALE");
+    if (!(scale > 0)) throw InputError("", "--curve-transform", "SCALE must be > 0");
+    const Eigen::Vector2d translation(parse_number(transform[3], "--curve-transform TX"),
+                                      parse_number(transform[4], "--curve-transform TY"));
+    objectives.trajectories.push_back({joint,
+                                       transform_curve(joint_trajectory(linkage, joint, angles), scale,
+                                                       to_radians(parse_number(transform[2], "--curve-transform DEGREES")),
+                                                       translation),
+                                       10.0});
+  }
 }
 
 int run_edit(const EditOptions& options) {
@@ -153,13 +185,14 @@ int run_edit(const EditOptions& options) {
     const int joint = joint_or_tracking_point(linkage, options.file, name);
     objectives.trajectories.push_back({joint, joint_trajectory(linkage, joint, angles), 10.0});
   }
+  add_target_curves(linkage, options, angles, objectives);
   if (!options.envelope.empty()) {
     const auto& e = options.envelope;
     if (!(e[0] < e[2] && e[1] < e[3])) throw InputError("", "--envelope", "expected XMIN YMIN XMAX YMAX with min < max");
     objectives.envelope = EditObjectives::Envelope{{e[0], e[1]}, {e[2], e[3]}, 10.0};
   }
   if (objectives.drags.empty() && objectives.trajectories.empty() && !objectives.envelope)
-    throw InputError("", "", "nothing to edit: give --drag, --keep-trajectory or --envelope");
+    throw InputError("", "", "nothing to edit: give --drag, --keep-trajectory, --curve-drag, --curve-transform or --envelope");
 
   const EditResult result = edit_linkage(linkage, objectives, settings);
   write_linkage(result.linkage, options.output);
@@ -177,11 +210,13 @@ int run_edit(const EditOptions& options) {
                drag.angle ? fmt::format(" at {}°", *options.at) : "", (position(linkage) - drag.target).norm(),
                (position(result.linkage) - drag.target).norm());
   }
-  for (const auto& trajectory : objectives.trajectories) {
+  for (std::size_t t = 0; t < objectives.trajectories.size(); ++t) {
+    const auto& trajectory = objectives.trajectories[t];
     const auto after = joint_trajectory(result.linkage, trajectory.joint, angles);
     double worst = 0;
     for (std::size_t s = 0; s < after.size(); ++s) worst = std::max(worst, (after[s] - trajectory.curve[s]).norm());
-    fmt::print("trajectory of {}: largest deviation {:.6g}\n", linkage.joints[trajectory.joint].name, worst);
+    fmt::print("{} of {}: largest deviation {:.6g}\n", t < options.keep.size() ? "trajectory" : "target curve",
+               linkage.joints[trajectory.joint].name, worst);
   }
   const MotionRange range = motion_range(SymbolicKinematics(result.linkage, order_joints(result.linkage)));
   fmt::print("motion: {}\nwrote {}\n", range.describe(), options.output);
@@ -246,6 +281,15 @@ void add_linkage_command(CLI::App& app, int& exit_code) {
       ->type_name("JOINT X Y");
   ed->add_option("--at", edit->at, "Drag in the configuration at this motor angle (degrees), not the initial one");
   ed->add_option("--keep-trajectory", edit->keep, "Keep the motion curve of this tracking point (or joint)");
+  ed->add_option("--curve-drag", edit->curve_drags,
+                 "Target curve: this point's motion curve with sample INDEX moved by DX DY, its neighbours along the "
+                 "curve less (soft selection of RADIUS)")
+      ->expected(5)
+      ->type_name("POINT INDEX DX DY RADIUS");
+  ed->add_option("--curve-transform", edit->curve_transforms,
+                 "Target curve: this point's motion curve scaled and turned (degrees) about its centroid, then moved")
+      ->expected(5)
+      ->type_name("POINT SCALE DEGREES TX TY");
   ed->add_option("--envelope", edit->envelope, "Keep every joint inside this box over the motion")
       ->expected(4)
       ->type_name("XMIN YMIN XMAX YMAX");

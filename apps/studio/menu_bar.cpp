@@ -8,6 +8,7 @@ void Studio::draw_menu_bar() {
   if (!ImGui::BeginMainMenuBar()) return;
   if (ImGui::BeginMenu("File")) {
     if (ImGui::MenuItem("Open...", "Ctrl+O")) show_open_dialog_ = true;
+    if (ImGui::MenuItem("Open linkage...")) linkage_panel_.request_open_dialog();
     if (ImGui::MenuItem("Save", "Ctrl+S", false, document_ != nullptr)) save();
     if (ImGui::MenuItem("Save as...", nullptr, false, document_ != nullptr)) {
       save_path_input_ = document_->file().string();
@@ -30,6 +31,11 @@ void Studio::draw_menu_bar() {
     if (ImGui::MenuItem("Frame all", "F")) frame_all();
     ImGui::MenuItem("Ghosts", nullptr, &show_ghosts);
     ImGui::MenuItem("Collision boxes", nullptr, &show_intervals);
+    const bool driven = document_ && active_transition_ >= 0 && document_->scene().transitions[active_transition_].linkage;
+    if (ImGui::MenuItem("Linkage editor", nullptr, linkage_panel_.shown(), driven || linkage_panel_.lone())) {
+      if (linkage_panel_.shown()) linkage_panel_.close();
+      else linkage_panel_.open_drive(*this, active_transition_);
+    }
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Collisions")) {

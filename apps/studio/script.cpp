@@ -15,11 +15,7 @@ namespace reconfig::studio {
 ScriptError::ScriptError(const std::string& file, int line, const std::string& message)
     : std::runtime_error(fmt::format("{}:{}: {}", file, line, message)) {}
 
-namespace {
-
-/// Runs frames with the mouse at each point in turn, the button held from the first to the
-/// last (a press, a drag through the points, a release).
-void drag_through(HeadlessFrontend& frontend, const std::vector<ImVec2>& points, int button = 0) {
+void drag_through(HeadlessFrontend& frontend, const std::vector<ImVec2>& points, int button) {
   SimulatedInput& input = frontend.input();
   input.mouse = points.front();
   frontend.run_frame();  // hover first: ImGui sees the press where the mouse already is
@@ -33,6 +29,8 @@ void drag_through(HeadlessFrontend& frontend, const std::vector<ImVec2>& points,
   frontend.run_frame();
   frontend.run_frame();
 }
+
+namespace {
 
 std::vector<ImVec2> segment(ImVec2 a, ImVec2 b, int steps) {
   std::vector<ImVec2> points;
@@ -218,6 +216,14 @@ class Runner {
   }
 
   void perform(const std::string& action, const std::vector<std::string>& args) {
+    if (action.starts_with("linkage-")) {  // the linkage panel's actions (linkage_script.cpp)
+      try {
+        run_linkage_action(frontend_, action, args);
+      } catch (const std::runtime_error& error) {
+        fail(error.what());
+      }
+      return;
+    }
     SimulatedInput& input = frontend_.input();
     if (action == "frames") {
       const int count = static_cast<int>(number(args, 0, "frame count"));

@@ -21,6 +21,14 @@ class ScriptError : public std::runtime_error {
   ScriptError(const std::string& file, int line, const std::string& message);
 };
 
+/// Runs frames with the mouse at each point in turn, the button held from the first to the
+/// last (a press, a drag through the points, a release).
+void drag_through(HeadlessFrontend& frontend, const std::vector<ImVec2>& points, int button = 0);
+
+/// Runs one of the linkage panel's actions (`linkage-…`, linkage_script.cpp).
+/// @throws std::runtime_error saying what failed
+void run_linkage_action(HeadlessFrontend& frontend, const std::string& action, const std::vector<std::string>& args);
+
 /// Runs the actions of `script_text` (named `label` in errors) on `frontend`.
 /// Relative paths in the script are taken from the current directory.
 /// @throws ScriptError at the first failing line

@@ -30,6 +30,7 @@ collision::CollisionServiceOptions editor_collision_options() {
 Studio::Studio(StudioOptions options) : options_(std::move(options)), renderer_(render::RendererOptions{0}) {}
 
 bool Studio::open(const fs::path& file) {
+  if (is_linkage_file(file)) return linkage_panel_.open_file(*this, file);
   try {
     document_ = Document::open(file, options_.collisions, options_.load);
   } catch (const std::exception& error) {
@@ -48,11 +49,13 @@ bool Studio::open(const fs::path& file) {
 }
 
 bool Studio::save() {
+  if (linkage_panel_.lone()) return linkage_panel_.save(*this);
   if (!document_) return false;
   return save_as(document_->file());
 }
 
 bool Studio::save_as(const fs::path& file) {
+  if (linkage_panel_.lone()) return linkage_panel_.save(*this, file);
   if (!document_) return false;
   try {
     document_->save_as(file, view::saved_view(camera_));
@@ -89,6 +92,7 @@ void Studio::reset_view_for_new_document() {
   } else {
     view::aim_at_working_side(camera_, scene);
   }
+  linkage_panel_.document_opened(*this);
 }
 
 void Studio::set_status(std::string message, bool error) {
@@ -159,6 +163,7 @@ void Studio::frame(std::chrono::steady_clock::time_point now) {
   draw_inspector();
   draw_viewport();
   draw_timeline();
+  linkage_panel_.draw(*this);  // after the timeline: a linkage opened alone covers it
   pip_.update(*this);
   pip_.draw(*this);
   draw_status_bar();
@@ -330,6 +335,7 @@ bool Studio::undo() { return step_history(false); }
 bool Studio::redo() { return step_history(true); }
 
 bool Studio::step_history(bool forward) {
+  if (linkage_panel_.lone()) return forward ? linkage_panel_.redo(*this) : linkage_panel_.undo(*this);
   if (!document_) return false;
   const std::string label = forward ? document_->redo_label() : document_->undo_label();
   if (!(forward ? document_->redo() : document_->undo())) {

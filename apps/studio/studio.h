@@ -24,6 +24,7 @@
 #include "document.h"
 #include "gizmo.h"
 #include "handle_drag.h"
+#include "linkage_panel.h"
 #include "pip_panel.h"
 #include "reconfig/render/occlusion_counter.h"
 #include "reconfig/render/render_target.h"
@@ -195,6 +196,8 @@ class Studio {
   /// The picture-in-picture panel (pip_panel.h).
   PipPanel& pip() { return pip_; }
   const PipPanel& pip() const { return pip_; }
+  /// The linkage panel (linkage_panel.h).
+  LinkagePanel& linkage_panel() { return linkage_panel_; }
 
   // ---- what the UI shows (for tests and scripts) ----------------------------------------
   int active_transition() const { return active_transition_; }
@@ -235,6 +238,7 @@ class Studio {
   bool show_intervals = true;
 
  private:
+  friend class LinkagePanel;  // its edits and messages go through execute and the status line
   // Panels.
   void draw_menu_bar();
   void draw_state_graph();
@@ -312,6 +316,7 @@ class Studio {
   std::optional<CameraGlide> camera_glide_;  ///< a flight to a best view in progress
   std::unique_ptr<render::OcclusionCounter> occlusion_counter_;  ///< made at the first best view
   PipPanel pip_;
+  LinkagePanel linkage_panel_;
 
   std::vector<int> open_transitions_;
   int active_transition_ = -1;

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "linkage_test_util.h"
+#include "reconfig/linkage/linkage_edit.h"
 #include "support/run_command.h"
 #include "support/test_data.h"
 
@@ -47,6 +48,45 @@ TEST_F(LinkageCli, SimulateFailsCleanlyPastADeadPointAndOnBadInput) {
   EXPECT_NE(r.out.find("bad.json: joints: expected a non-empty array"), std::string::npos) << r.out;
   r = run("linkage simulate " + (dir / "missing.json").string() + " --angles 0");
   EXPECT_EQ(r.exit_code, 2);
+}
+
+/// The number after `prefix` in `text` (−1 if absent).
+double number_after(const std::string& text, const std::string& prefix) {
+  const auto at = text.find(prefix);
+  return at == std::string::npos ? -1 : std::stod(text.substr(at + prefix.size()));
+}
+
+TEST_F(LinkageCli, EditFollowsTargetCurves) {
+  const auto dir = testing::fresh_temp_dir();
+  const std::string out = (dir / "edited.json").string();
+  // Sample 54 of the foot's curve lifted by 8 (soft selection of radius 15): the target is 8
+  // away from the foot's path there; the edit brings the path well within that.
+  testing::CommandResult r = run("linkage edit " + example_path("jansen.json") + " --curve-drag foot 54 0 8 15 -o " + out);
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const double drag = number_after(r.out, "target curve of P: largest deviation ");
+  EXPECT_GT(drag, 0) << r.out;
+  EXPECT_LT(drag, 4) << r.out;
+  EXPECT_NE(r.out.find("motion: full rotation"), std::string::npos) << r.out;
+  const Linkage before = test::example("jansen.json"), after = read_linkage(out);
+  const std::vector<double> angles = edit_sample_angles(before, 72);
+  const int foot = before.find_joint("P");
+  EXPECT_GT(joint_trajectory(after, foot, angles)[54].y() - joint_trajectory(before, foot, angles)[54].y(), 4);
+  // The whole curve 10% smaller about its centroid, the rest of the motion kept.
+  r = run("linkage edit " + example_path("jansen.json") + " --curve-transform foot 0.9 0 0 0 -o " + out);
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_GT(number_after(r.out, "target curve of P: largest deviation "), 0) << r.out;
+  r = run("linkage edit " + example_path("jansen.json") + " --curve-drag foot 72 0 8 15 -o " + out);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.out.find("--curve-drag: INDEX must be a sample index 0 … 71, not 72"), std::string::npos) << r.out;
+  r = run("linkage edit " + example_path("jansen.json") + " --curve-drag foot 3 0 8 -1 -o " + out);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.out.find("RADIUS must be ≥ 0"), std::string::npos) << r.out;
+  r = run("linkage edit " + example_path("jansen.json") + " --curve-transform foot 0 0 0 0 -o " + out);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.out.find("SCALE must be > 0"), std::string::npos) << r.out;
+  r = run("linkage edit " + example_path("jansen.json") + " --curve-transform Q 1 0 0 0 -o " + out);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.out.find("no joint or tracking point named \"Q\""), std::string::npos) << r.out;
 }
 
 TEST_F(LinkageCli, EditAndPlotWriteFiles) {
