@@ -122,6 +122,19 @@ void posed_occluders(const scene::Reconfigurable& scene, int transition, double 
   }
 }
 
+BestViewRequest interval_view_request(const scene::Reconfigurable& scene, int transition,
+                                      const collision::CollisionInterval& interval, double time) {
+  BestViewRequest request;
+  request.transition = transition;
+  request.time = time;
+  request.t0 = interval.t0;
+  request.t1 = interval.t1;
+  request.parts = interval.parts;
+  request.box = interval.box;
+  request.ground = scene.ground;
+  return request;
+}
+
 BestView best_view(OcclusionCounter& counter, const scene::Reconfigurable& scene, const BestViewRequest& request) {
   // A box that is a point or a sliver still gets a view of some of its surroundings.
   const Eigen::AlignedBox3d bounds = view::scene_bounds_at(scene, request.transition, request.time);

@@ -14,6 +14,7 @@
 #include <limits>
 #include <vector>
 
+#include "reconfig/collision/collision_interval.h"
 #include "reconfig/render/occlusion_counter.h"
 #include "reconfig/scene/reconfigurable.h"
 #include "reconfig/view/camera.h"
@@ -48,6 +49,11 @@ struct BestView {
   /// chosen one shows, so they could not beat it.
   int counted = 0;
 };
+
+/// The request for `interval` of `transition` drawn at `time` (its severity time): its extent,
+/// parts and box, the ground as `scene` has it, the rest as `BestViewRequest` says.
+BestViewRequest interval_view_request(const scene::Reconfigurable& scene, int transition,
+                                      const collision::CollisionInterval& interval, double time);
 
 /// Poses every part but `request.parts` at `request.time` as occluders of `counter` and picks
 /// the view of X.
