@@ -1,5 +1,5 @@
 // The jump to a collision interval's best view (V) and the pictures of the picture-in-picture:
-// occlusion queries over candidate views (render/best_view.h), a short camera glide.
+// occlusion counts over candidate views (render/best_view.h), a short camera glide.
 
 #include <fmt/format.h>
 

@@ -11,9 +11,10 @@
 namespace reconfig::render {
 namespace {
 
-// Cameras counted at a time, the highest coverage first: after each round the rest may
-// be ruled out.
-constexpr int kCamerasPerRound = 64;
+// Cameras counted in the first round, the highest coverage first: after each round the rest
+// may be ruled out. Each round after counts twice as many (up to a batch of the counter), so
+// that when none can be ruled out the rounds are few.
+constexpr std::size_t kFirstRound = 64;
 
 struct MostVisible {
   int index = 0;    // of the camera
@@ -35,10 +36,11 @@ MostVisible most_visible(OcclusionCounter& counter, const Eigen::AlignedBox3d& b
   int best = 0;
   long best_visible = -1;
   std::size_t counted = 0;
-  for (std::size_t first = 0; first < order.size(); first += kCamerasPerRound) {
+  const auto batch = static_cast<std::size_t>(counter.batch_size());
+  for (std::size_t first = 0, size = kFirstRound; first < order.size(); first += size, size = std::min(2 * size, batch)) {
     const int next = order[first];
     if (coverage[next] < best_visible || (coverage[next] == best_visible && next > best)) break;
-    const std::size_t last = std::min(order.size(), first + kCamerasPerRound);
+    const std::size_t last = std::min(order.size(), first + size);
     const std::vector<int> round(order.begin() + static_cast<long>(first), order.begin() + static_cast<long>(last));
     const std::vector<OcclusionCount> counts = counter.count_selected(box, cameras, round, false);
     counted = last;
