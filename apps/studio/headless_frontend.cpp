@@ -83,6 +83,7 @@ bool HeadlessFrontend::run_until_collisions_current(std::chrono::milliseconds ti
     if (snapshot && snapshot->complete && snapshot->version == document->version()) break;
     if (std::chrono::steady_clock::now() > deadline) return false;
   }
+  run_frame();  // it may have come after the panels looked in the last one: now they all see it
   return run_while_pip_searches(deadline);
 }
 

@@ -46,14 +46,23 @@ bool has_extension(const char* extensions, const char* name) {
 }
 
 // Contexts alive per display. Every context of the process gets the same surfaceless display,
-// and eglTerminate ends it for all of them: the last context to go terminates it.
-std::mutex displays_mutex;
-std::map<EGLDisplay, int> contexts_per_display;
+// and eglTerminate ends it for all of them: the last context to go terminates it. Never
+// destroyed: contexts held by static objects go after every static of this file.
+struct Displays {
+  std::mutex mutex;
+  std::map<EGLDisplay, int> contexts;
+};
+
+Displays& displays() {
+  static Displays* const instance = new Displays;
+  return *instance;
+}
 
 void release_display(EGLDisplay display) {
-  std::lock_guard lock(displays_mutex);
-  if (--contexts_per_display[display] > 0) return;
-  contexts_per_display.erase(display);
+  Displays& all = displays();
+  std::lock_guard lock(all.mutex);
+  if (--all.contexts[display] > 0) return;
+  all.contexts.erase(display);
   eglTerminate(display);
 }
 
@@ -63,7 +72,7 @@ void release_display(EGLDisplay display) {
 struct EglContext::Impl {
   EGLDisplay display = EGL_NO_DISPLAY;
   EGLContext context = EGL_NO_CONTEXT;
-  bool initialized = false;  ///< counted in contexts_per_display
+  bool initialized = false;  ///< counted in `displays()`
 
   Impl() = default;
   Impl(const Impl&) = delete;
@@ -88,9 +97,10 @@ EglContext::EglContext() : impl_(std::make_unique<Impl>()) {
   if (impl_->display == EGL_NO_DISPLAY) fail("eglGetPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA)");
   EGLint major = 0, minor = 0;
   {
-    std::lock_guard lock(displays_mutex);  // not while another thread terminates it
+    Displays& all = displays();
+    std::lock_guard lock(all.mutex);  // not while another thread terminates it
     if (!eglInitialize(impl_->display, &major, &minor)) fail("eglInitialize");
-    ++contexts_per_display[impl_->display];
+    ++all.contexts[impl_->display];
     impl_->initialized = true;
   }
   if (!eglBindAPI(EGL_OPENGL_API)) fail("eglBindAPI(EGL_OPENGL_API)");
