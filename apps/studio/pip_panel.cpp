@@ -83,9 +83,13 @@ void PipPanel::update(Studio& studio) {
     open_on(studio, current->transition, *side_effect);
     return;
   }
-  if (!target_ || target_->transition != current->transition) return;
+  if (!target_ && !pending_) return;
+  // What it shows, or will show once found.
+  const int shown_transition = pending_ ? pending_->transition : target_->transition;
+  const collision::CollisionInterval shown = pending_ ? pending_->interval : target_->interval;
+  if (shown_transition != current->transition) return;
   for (const collision::CollisionInterval& interval : current->intervals)
-    if (same_collision(interval, target_->interval)) {
+    if (same_collision(interval, shown)) {
       open_on(studio, current->transition, interval);  // it moved: follow it
       return;
     }
