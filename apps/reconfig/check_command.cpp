@@ -289,7 +289,7 @@ int run_check(const CheckOptions& options) {
   std::vector<std::vector<resolve::IntervalEnergy>> energies;
   std::vector<std::vector<render::BestView>> views;
   if (options.energy || options.views || visual) energies = interval_energies(scene, outcome.transitions);
-  std::optional<render::EglContext> context;  // headless drawing: occlusion queries, pictures
+  std::optional<render::EglContext> context;  // headless drawing: occlusion counts, pictures
   if (options.views || visual) {
     context.emplace();
     views = interval_views(scene, outcome.transitions, energies);

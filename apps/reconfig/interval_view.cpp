@@ -4,15 +4,7 @@ namespace reconfig::cli {
 
 render::BestView interval_best_view(render::OcclusionCounter& counter, const scene::Reconfigurable& scene,
                                     int transition, const collision::CollisionInterval& interval, double time) {
-  render::BestViewRequest request;
-  request.transition = transition;
-  request.time = time;
-  request.t0 = interval.t0;
-  request.t1 = interval.t1;
-  request.parts = interval.parts;
-  request.box = interval.box;
-  request.ground = scene.ground;
-  return render::best_view(counter, scene, request);
+  return render::best_view(counter, scene, render::interval_view_request(scene, transition, interval, time));
 }
 
 view::Camera picture_camera(const render::BestView& view, const Eigen::AlignedBox3d& scene_bounds) {

@@ -213,7 +213,7 @@ void add_render_command(CLI::App& app, int& exit_code) {
                        ->needs(transition)
                        ->excludes(time);
   auto* best = command->add_flag("--best-view", options->best_view,
-                                 "With --interval: look from the view that shows the interval best (occlusion queries)")
+                                 "With --interval: look from the view that shows the interval best (occlusion counts)")
                    ->needs(interval);
   command->add_option("--samples", options->samples, "Time samples of the collision check behind --intervals")
       ->check(CLI::Range(2, 100000));

@@ -1,5 +1,5 @@
 // The jump to a collision interval's best view (V) and the pictures of the picture-in-picture:
-// occlusion queries over candidate views (render/best_view.h), a short camera glide.
+// occlusion counts over candidate views (render/best_view.h), a short camera glide.
 
 #include <fmt/format.h>
 
@@ -13,14 +13,7 @@ namespace reconfig::studio {
 
 view::Camera Studio::best_view_camera(int transition, const collision::CollisionInterval& interval, double time) {
   if (!occlusion_counter_) occlusion_counter_ = std::make_unique<render::OcclusionCounter>();
-  render::BestViewRequest request;
-  request.transition = transition;
-  request.time = time;
-  request.t0 = interval.t0;
-  request.t1 = interval.t1;
-  request.parts = interval.parts;
-  request.box = interval.box;
-  request.ground = document_->scene().ground;
+  render::BestViewRequest request = render::interval_view_request(document_->scene(), transition, interval, time);
   request.fov_y = camera_.fov_y;
   view::Camera camera = render::best_view(*occlusion_counter_, document_->scene(), request).camera;
   camera.fit_planes(view::scene_bounds_at(document_->scene(), transition, time));  // the whole design, not just X

@@ -53,9 +53,13 @@ class HeadlessFrontend {
   /// Runs one frame with the current input; returns its wall time in milliseconds (UI, 3D
   /// and drawing the UI, finished on the GL side).
   double run_frame();
-  /// Runs frames until the collision picture describes the current design, or `timeout`.
+  /// Runs frames until the collision picture describes the current design and the
+  /// picture-in-picture it opened has found its view, or `timeout`.
   /// @return whether it got there
   bool run_until_collisions_current(std::chrono::milliseconds timeout);
+  /// Runs frames while the picture-in-picture searches for its view, or until `deadline`.
+  /// @return whether the search ended
+  bool run_while_pip_searches(std::chrono::steady_clock::time_point deadline);
   /// The last frame's image.
   render::Image screenshot() const { return frame_.read_pixels(); }
   int width() const { return width_; }

@@ -1,6 +1,8 @@
 #include <backends/imgui_impl_opengl3.h>
 #include <epoxy/gl.h>
 
+#include <thread>
+
 #include "frontend.h"
 #include "keys.h"
 
@@ -78,9 +80,20 @@ bool HeadlessFrontend::run_until_collisions_current(std::chrono::milliseconds ti
     document->collisions().wait_until_complete(std::chrono::milliseconds(20));
     run_frame();
     const auto snapshot = studio_->collisions();
-    if (snapshot && snapshot->complete && snapshot->version == document->version()) return true;
+    if (snapshot && snapshot->complete && snapshot->version == document->version()) break;
     if (std::chrono::steady_clock::now() > deadline) return false;
   }
+  run_frame();  // it may have come after the panels looked in the last one: now they all see it
+  return run_while_pip_searches(deadline);
+}
+
+bool HeadlessFrontend::run_while_pip_searches(std::chrono::steady_clock::time_point deadline) {
+  while (studio_->pip().searching()) {
+    if (std::chrono::steady_clock::now() > deadline) return false;
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    run_frame();
+  }
+  return true;
 }
 
 }  // namespace reconfig::studio

@@ -2,9 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+
 #include "side_effects.h"
 #include "studio.h"
-#include "reconfig/resolve/interval_energy.h"
 
 namespace reconfig::studio {
 namespace {
@@ -24,14 +25,36 @@ std::string part_names(const scene::Reconfigurable& scene, const collision::Coll
 }  // namespace
 
 void PipPanel::open_on(Studio& studio, int transition, const collision::CollisionInterval& interval) {
-  const scene::Reconfigurable& scene = studio.document()->scene();
-  resolve::ShapeCache shapes;  // the design changes between calls: shapes are not kept
-  const double time = resolve::interval_energy(scene, shapes, transition, interval).severity_time;
-  target_ = Target{transition, interval, time, studio.best_view_camera(transition, interval, time)};
+  if (!search_) search_ = std::make_unique<ViewSearch>();
+  const std::uint64_t id =
+      search_->submit({studio.document()->shared_scene(), transition, interval, studio.camera().fov_y});
+  pending_ = Pending{id, transition, interval};
+  error_.clear();
+}
+
+void PipPanel::close() {
+  target_.reset();
+  error_.clear();
+  pending_.reset();
+  if (search_) search_->cancel();
+}
+
+void PipPanel::take_search_result() {
+  if (!pending_ || !search_) return;
+  std::optional<ViewSearch::Result> found = search_->take();
+  if (!found || found->id != pending_->id) return;
+  const Pending pending = *pending_;
+  pending_.reset();
+  if (!found->error.empty()) {
+    error_ = found->error;
+    return;
+  }
+  target_ = Target{pending.transition, pending.interval, found->time, found->camera};
   drawn_version_ = 0;
 }
 
 void PipPanel::update(Studio& studio) {
+  take_search_result();
   const auto snapshot = studio.collisions();
   if (!snapshot || !studio.document()) return;
   const collision::TransitionSnapshot* current = transition_snapshot(*snapshot, studio.active_transition());
@@ -60,9 +83,13 @@ void PipPanel::update(Studio& studio) {
     open_on(studio, current->transition, *side_effect);
     return;
   }
-  if (!target_ || target_->transition != current->transition) return;
+  if (!target_ && !pending_) return;
+  // What it shows, or will show once found.
+  const int shown_transition = pending_ ? pending_->transition : target_->transition;
+  const collision::CollisionInterval shown = pending_ ? pending_->interval : target_->interval;
+  if (shown_transition != current->transition) return;
   for (const collision::CollisionInterval& interval : current->intervals)
-    if (same_collision(interval, target_->interval)) {
+    if (same_collision(interval, shown)) {
       open_on(studio, current->transition, interval);  // it moved: follow it
       return;
     }
@@ -71,6 +98,8 @@ void PipPanel::update(Studio& studio) {
 
 void PipPanel::swap(Studio& studio) {
   if (!target_) return;
+  pending_.reset();
+  if (search_) search_->cancel();
   const Target shown = *target_;
   std::optional<Target> main;
   if (worked_on_ && studio.active_transition() >= 0)
@@ -88,18 +117,22 @@ void PipPanel::swap(Studio& studio) {
 
 void PipPanel::draw(Studio& studio) {
   image_min_ = image_max_ = {0, 0};
-  if (!target_ || !studio.document()) return;
+  if ((!target_ && !pending_ && error_.empty()) || !studio.document()) return;
   const Layout& layout = studio.layout();
   const float margin = 10, caption = ImGui::GetFrameHeight() + 8;
   ImGui::SetNextWindowPos({layout.viewport_max.x - kWidth - margin - 16, layout.viewport_min.y + margin + 20});
   ImGui::SetNextWindowSize({kWidth + 16, kHeight + caption + 12});
   bool open = true;
-  const std::string title = fmt::format("Side effect: {}  t = {:.3f}###pip",
-                                        part_names(studio.document()->scene(), target_->interval), target_->time);
+  const std::string title =
+      target_ ? fmt::format("Side effect: {}  t = {:.3f}###pip", part_names(studio.document()->scene(), target_->interval),
+                            target_->time)
+      : pending_ ? fmt::format("Side effect: {}  (finding its view)###pip",
+                               part_names(studio.document()->scene(), pending_->interval))
+                 : std::string("Side effect: no view###pip");
   if (ImGui::Begin(title.c_str(), &open,
                    ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse |
                        ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoScrollbar)) {
-    if (drawn_version_ != studio.document()->version()) {
+    if (target_ && drawn_version_ != studio.document()->version()) {
       studio.render_view(image_, target_->camera, target_->transition, target_->time, {target_->interval.box}, kWidth,
                          kHeight);
       drawn_version_ = studio.document()->version();
@@ -107,16 +140,34 @@ void PipPanel::draw(Studio& studio) {
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     ImGui::InvisibleButton("##pip_image", {kWidth, kHeight});
     const bool clicked = ImGui::IsItemClicked();
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Click: swap with the main view");
-    image_min_ = origin;
-    image_max_ = {origin.x + kWidth, origin.y + kHeight};
-    ImGui::GetWindowDrawList()->AddImage(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(image_.texture())),
-                                         image_min_, image_max_, {0, 1}, {1, 0});
-    ImGui::GetWindowDrawList()->AddRect(image_min_, image_max_, IM_COL32(235, 190, 20, 255), 0, 0, 2);
+    if (target_ && ImGui::IsItemHovered()) ImGui::SetTooltip("Click: swap with the main view");
+    const ImVec2 image_max{origin.x + kWidth, origin.y + kHeight};
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    if (target_) {
+      image_min_ = origin;
+      image_max_ = image_max;
+      draw->AddImage(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(image_.texture())), image_min_, image_max_,
+                     {0, 1}, {1, 0});
+    }
+    draw->AddRect(origin, image_max, IM_COL32(235, 190, 20, 255), 0, 0, 2);
+    if (!target_ && !pending_)
+      draw->AddText(nullptr, 0, {origin.x + 8, origin.y + 8}, ImGui::GetColorU32(ImGuiCol_Text), error_.c_str(), nullptr,
+                    kWidth - 16);
+    if (pending_) {  // in the middle while there is nothing to show, else in a corner
+      if (target_) draw_spinner(draw, {image_max.x - 18, origin.y + 18}, 9);
+      else draw_spinner(draw, {origin.x + kWidth / 2.0f, origin.y + kHeight / 2.0f}, 18);
+    }
     if (clicked) swap(studio);
   }
   ImGui::End();
   if (!open) close();
+}
+
+// A three-quarter circle turning once a second.
+void PipPanel::draw_spinner(ImDrawList* draw, ImVec2 center, float radius) const {
+  const float start = static_cast<float>(std::fmod(ImGui::GetTime(), 1.0) * 2 * M_PI);
+  draw->PathArcTo(center, radius, start, start + 1.5f * static_cast<float>(M_PI), 24);
+  draw->PathStroke(IM_COL32(235, 190, 20, 255), 0, 3);
 }
 
 void PipPanel::draw_timeline_marker(ImDrawList* draw, const Studio& studio) const {

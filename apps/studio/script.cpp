@@ -151,6 +151,12 @@ class Runner {
 
   void click(ImVec2 at, int button = 0) { drag_through(frontend_, {at}, button); }
 
+  /// Until the picture-in-picture's view search under way, if any, ended (60 s at most).
+  void wait_for_pip() {
+    if (!frontend_.run_while_pip_searches(std::chrono::steady_clock::now() + std::chrono::seconds(60)))
+      fail("the picture-in-picture found no view within 60 s");
+  }
+
   void press_key(const std::string& chord) {
     SimulatedInput& input = frontend_.input();
     std::string rest = chord;
@@ -333,10 +339,12 @@ class Runner {
       if (studio().status().find(text) == std::string::npos)
         fail(fmt::format("expected the status to say \"{}\", it says \"{}\"", text, studio().status()));
     } else if (action == "click-pip") {
+      wait_for_pip();
       if (!studio().pip().target()) fail("no picture-in-picture is open");
       const ImVec2 lo = studio().pip().image_min(), hi = studio().pip().image_max();
       click({(lo.x + hi.x) / 2, (lo.y + hi.y) / 2});
     } else if (action == "expect-pip") {
+      wait_for_pip();
       const auto& target = studio().pip().target();
       std::string shown = "none";
       if (target) {

@@ -1,6 +1,7 @@
 #include "reconfig/render/best_view.h"
 
 #include <algorithm>
+#include <numeric>
 
 #include "reconfig/geometry/display_simplification.h"
 #include "reconfig/view/box_view_camera.h"
@@ -10,12 +11,49 @@
 namespace reconfig::render {
 namespace {
 
-// The index of the candidate with the most visible pixels (the first of equals).
-int most_visible(const std::vector<OcclusionCount>& counts) {
+// Cameras counted in the first round, the highest coverage first: after each round the rest
+// may be ruled out. Each round after counts twice as many (up to a batch of the counter), so
+// that when none can be ruled out the rounds are few.
+constexpr std::size_t kFirstRound = 64;
+
+struct MostVisible {
+  int index = 0;    // of the camera
+  int counted = 0;  // cameras counted with their occluders
+};
+
+// The camera that sees the most visible pixels of `box` (the first of equals).
+// A camera sees no more of the box than the box covers in its image (both counted in its
+// tile of the atlas, so the same pixels exactly), so the cameras are
+// counted in the order of their coverage (the first of equals first), and counting stops when
+// the next one could neither see more than the best so far nor tie it with a lower index: the
+// answer is the one counting every camera would give.
+MostVisible most_visible(OcclusionCounter& counter, const Eigen::AlignedBox3d& box,
+                         const std::vector<view::Camera>& cameras) {
+  const std::vector<long> coverage = counter.coverage(box, cameras);
+  std::vector<int> order(cameras.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return coverage[a] > coverage[b]; });
   int best = 0;
-  for (std::size_t i = 1; i < counts.size(); ++i)
-    if (counts[i].visible > counts[best].visible) best = static_cast<int>(i);
-  return best;
+  long best_visible = -1;
+  std::size_t counted = 0;
+  const auto batch = static_cast<std::size_t>(counter.batch_size());
+  for (std::size_t first = 0, size = kFirstRound; first < order.size(); first += size, size = std::min(2 * size, batch)) {
+    const int next = order[first];
+    if (coverage[next] < best_visible || (coverage[next] == best_visible && next > best)) break;
+    const std::size_t last = std::min(order.size(), first + size);
+    const std::vector<int> round(order.begin() + static_cast<long>(first), order.begin() + static_cast<long>(last));
+    const std::vector<OcclusionCount> counts = counter.count_selected(box, cameras, round, false);
+    counted = last;
+    for (std::size_t k = first; k < last; ++k) {
+      const int i = order[k];
+      const long visible = counts[k - first].visible;
+      if (visible > best_visible || (visible == best_visible && i < best)) {
+        best = i;
+        best_visible = visible;
+      }
+    }
+  }
+  return {best, static_cast<int>(counted)};
 }
 
 // The rows of F whose triangle's bounding box comes within `radius` of `center`.
@@ -86,6 +124,19 @@ void posed_occluders(const scene::Reconfigurable& scene, int transition, double 
   }
 }
 
+BestViewRequest interval_view_request(const scene::Reconfigurable& scene, int transition,
+                                      const collision::CollisionInterval& interval, double time) {
+  BestViewRequest request;
+  request.transition = transition;
+  request.time = time;
+  request.t0 = interval.t0;
+  request.t1 = interval.t1;
+  request.parts = interval.parts;
+  request.box = interval.box;
+  request.ground = scene.ground;
+  return request;
+}
+
 BestView best_view(OcclusionCounter& counter, const scene::Reconfigurable& scene, const BestViewRequest& request) {
   // A box that is a point or a sliver still gets a view of some of its surroundings.
   const Eigen::AlignedBox3d bounds = view::scene_bounds_at(scene, request.transition, request.time);
@@ -100,19 +151,15 @@ BestView best_view(OcclusionCounter& counter, const scene::Reconfigurable& scene
   if (request.ground) add_floor(bounds.min().z() - 1e-3 * bounds.diagonal().norm(), request.box.center(), reach, V, F);
   counter.set_occluders(V, F);
 
-  const auto count_directions = [&](const std::vector<Eigen::Vector3d>& directions) {
+  const auto result = [&](const std::vector<Eigen::Vector3d>& directions, bool from_motion) {
     std::vector<view::Camera> cameras;
     cameras.reserve(directions.size());
     for (const Eigen::Vector3d& d : directions)
       cameras.push_back(view::box_view_camera(request.box, d, 1.0, request.fov_y, min_radius));
-    return std::pair{cameras, counter.count(request.box, cameras, false)};
-  };
-  const auto result = [&](const std::vector<Eigen::Vector3d>& directions, bool from_motion) {
-    const auto [cameras, counts] = count_directions(directions);
-    const int best = most_visible(counts);
-    const OcclusionCount pixels = counter.count(request.box, {cameras[best]}).front();  // with its total
-    return BestView{cameras[best], directions[best], pixels, from_motion,
-                    static_cast<int>(directions.size())};
+    const auto [best, counted] = most_visible(counter, request.box, cameras);
+    const OcclusionCount pixels = counter.count_selected(request.box, cameras, {best}).front();  // with its total
+    return BestView{cameras[best], directions[best], pixels, from_motion, static_cast<int>(directions.size()),
+                    counted};
   };
 
   if (request.parts.size() == 2 && !request.always_sample) {

@@ -5,6 +5,8 @@
 
 #include <cstdio>
 #include <cstring>
+#include <map>
+#include <mutex>
 #include <string>
 
 namespace reconfig::render {
@@ -43,11 +45,46 @@ bool has_extension(const char* extensions, const char* name) {
   return false;
 }
 
+// Contexts alive per display. Every context of the process gets the same surfaceless display,
+// and eglTerminate ends it for all of them: the last context to go terminates it. Never
+// destroyed: contexts held by static objects go after every static of this file.
+struct Displays {
+  std::mutex mutex;
+  std::map<EGLDisplay, int> contexts;
+};
+
+Displays& displays() {
+  static Displays* const instance = new Displays;
+  return *instance;
+}
+
+void release_display(EGLDisplay display) {
+  Displays& all = displays();
+  std::lock_guard lock(all.mutex);
+  if (--all.contexts[display] > 0) return;
+  all.contexts.erase(display);
+  eglTerminate(display);
+}
+
 }  // namespace
 
+// Also when the constructor fails half-way: what was made is undone.
 struct EglContext::Impl {
   EGLDisplay display = EGL_NO_DISPLAY;
   EGLContext context = EGL_NO_CONTEXT;
+  bool initialized = false;  ///< counted in `displays()`
+
+  Impl() = default;
+  Impl(const Impl&) = delete;
+  Impl& operator=(const Impl&) = delete;
+  ~Impl() {
+    if (!initialized) return;
+    if (context != EGL_NO_CONTEXT) {
+      eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+      eglDestroyContext(display, context);
+    }
+    release_display(display);
+  }
 };
 
 EglContext::EglContext() : impl_(std::make_unique<Impl>()) {
@@ -59,7 +96,13 @@ EglContext::EglContext() : impl_(std::make_unique<Impl>()) {
   impl_->display = eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
   if (impl_->display == EGL_NO_DISPLAY) fail("eglGetPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA)");
   EGLint major = 0, minor = 0;
-  if (!eglInitialize(impl_->display, &major, &minor)) fail("eglInitialize");
+  {
+    Displays& all = displays();
+    std::lock_guard lock(all.mutex);  // not while another thread terminates it
+    if (!eglInitialize(impl_->display, &major, &minor)) fail("eglInitialize");
+    ++all.contexts[impl_->display];
+    impl_->initialized = true;
+  }
   if (!eglBindAPI(EGL_OPENGL_API)) fail("eglBindAPI(EGL_OPENGL_API)");
   const EGLint config_attributes[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
   EGLConfig config = nullptr;
@@ -77,13 +120,7 @@ EglContext::EglContext() : impl_(std::make_unique<Impl>()) {
   make_current();
 }
 
-EglContext::~EglContext() {
-  if (impl_->display != EGL_NO_DISPLAY) {
-    eglMakeCurrent(impl_->display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
-    if (impl_->context != EGL_NO_CONTEXT) eglDestroyContext(impl_->display, impl_->context);
-    eglTerminate(impl_->display);
-  }
-}
+EglContext::~EglContext() = default;
 
 void EglContext::make_current() {
   if (!eglMakeCurrent(impl_->display, EGL_NO_SURFACE, EGL_NO_SURFACE, impl_->context))

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 #include "reconfig/view/box_view_camera.h"
 #include "reconfig/view/scene_bounds.h"
@@ -141,6 +142,65 @@ TEST_F(RenderTest, BestViewOfThreePartsBeatsAxisAndRandomViewsByTheOracle) {
   EXPECT_GE(chosen + slack, best_axis);
   EXPECT_GE(chosen + slack, best_random);
   EXPECT_NEAR(chosen, best.pixels.visible, slack);
+}
+
+// Random plates around three meeting parts: the view chosen (its coverage ruling out most
+// candidates uncounted) is the one counting every candidate picks, the first of the most
+// visible.
+TEST_F(RenderTest, BestViewIsTheOneThatCountingEveryCandidatePicks) {
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> place(-0.6, 0.6), size(0.05, 0.7);
+  int pruned = 0, several_rounds = 0, hidden_somewhat = 0;
+  for (int trial = 0; trial < 8; ++trial) {
+    std::vector<SlidingBox> boxes = {{{0.4, 0.4, 0.3}, {-1, 0, 0}, {1, 0, 0}},
+                                     {{0.4, 0.4, 0.2}, {0, -1, 0}, {0, 1, 0}},
+                                     {{0.2, 0.2, 0.6}, {0, 0, -1}, {0, 0, 1}}};
+    for (int k = 0; k < 3 + 2 * trial; ++k) {
+      const Eigen::Vector3d at(place(random), place(random), place(random));
+      boxes.push_back({Eigen::Vector3d(size(random), size(random), size(random)), at, at});
+    }
+    const scene::Reconfigurable scene = testing::sliding_boxes(boxes);
+    BestViewRequest request;
+    request.time = 0.5;
+    request.t0 = 0.4;
+    request.t1 = 0.6;
+    request.parts = {0, 1, 2};
+    request.box = Eigen::AlignedBox3d(Eigen::Vector3d(-0.1, -0.1, -0.1), Eigen::Vector3d(0.1, 0.1, 0.1));
+    request.ground = false;
+    request.samples = 300;
+    request.seed = trial + 1;
+    OcclusionCounter counter;
+    const BestView chosen = best_view(counter, scene, request);
+
+    // Every candidate counted, as best_view builds them.
+    const double min_radius = 0.02 * view::scene_bounds_at(scene, 0, request.time).diagonal().norm();
+    Eigen::MatrixX3d V;
+    Eigen::MatrixX3i F;
+    posed_occluders(scene, 0, request.time, request.parts, request.max_triangles, V, F, request.box.center(),
+                    view::box_view_distance(request.box, request.fov_y, min_radius));
+    counter.set_occluders(V, F);
+    std::vector<Eigen::Vector3d> directions = view::axis_view_directions(false);
+    for (const Eigen::Vector3d& d : view::random_view_directions(request.samples, false, request.seed))
+      directions.push_back(d);
+    std::vector<view::Camera> cameras;
+    for (const Eigen::Vector3d& d : directions)
+      cameras.push_back(view::box_view_camera(request.box, d, 1.0, request.fov_y, min_radius));
+    const std::vector<OcclusionCount> counts = counter.count(request.box, cameras);
+    std::size_t first_best = 0;
+    for (std::size_t i = 1; i < counts.size(); ++i)
+      if (counts[i].visible > counts[first_best].visible) first_best = i;
+
+    ASSERT_EQ(chosen.candidates, static_cast<int>(directions.size()));
+    EXPECT_TRUE(chosen.direction.isApprox(directions[first_best])) << "trial " << trial;
+    EXPECT_EQ(chosen.pixels.visible, counts[first_best].visible) << "trial " << trial;
+    EXPECT_EQ(chosen.pixels.total, counts[first_best].total) << "trial " << trial;
+    pruned += chosen.counted < chosen.candidates;
+    several_rounds += chosen.counted > 64;
+    hidden_somewhat += counts[first_best].visible < counts[first_best].total;
+  }
+  EXPECT_GT(pruned, 0);           // coverage did rule candidates out
+  EXPECT_GT(several_rounds, 0);   // and sometimes only after several rounds
+  EXPECT_GT(hidden_somewhat, 0);  // some best views are partly hidden
 }
 
 }  // namespace

@@ -39,6 +39,18 @@ TEST_F(RenderTest, OcclusionCountsMatchRayCastingOverRandomViews) {
     cameras.push_back(view::box_view_camera(box, d));
   const std::vector<OcclusionCount> counts = counter.count(box, cameras);
   ASSERT_EQ(counts.size(), cameras.size());
+  const std::vector<long> coverage = counter.coverage(box, cameras);
+  ASSERT_EQ(coverage.size(), cameras.size());
+  for (std::size_t i = 0; i < cameras.size(); ++i)
+    EXPECT_EQ(coverage[i], counts[i].total) << "camera " << i;  // the same pixels, without occluders
+  // Any few of them, in any order, count as they did among all.
+  const std::vector<int> which = {counter.batch_size() + 3, 7, 3, counter.batch_size() + 7, 200};
+  const std::vector<OcclusionCount> some = counter.count_selected(box, cameras, which, false);
+  ASSERT_EQ(some.size(), which.size());
+  for (std::size_t k = 0; k < which.size(); ++k) {
+    EXPECT_EQ(some[k].visible, counts[which[k]].visible) << "camera " << which[k];
+    EXPECT_EQ(some[k].total, 0);
+  }
   int partly_hidden = 0;
   for (std::size_t i = 0; i < cameras.size(); i += 7) {  // the oracle is slow: every 7th
     const testing::RayCount oracle = testing::ray_cast_count(cameras[i], kResolution, box, slabs.V, slabs.F);

@@ -146,6 +146,8 @@ TEST_F(StudioPip, PressingPOverABandOpensItAndVGlidesToTheBestView) {
   frontend_->run_frame();
   frontend_->input().keys_down.clear();
   frontend_->run_frame();
+  EXPECT_TRUE(studio().pip().searching());  // on its own thread: the frame did not wait
+  ASSERT_TRUE(frontend_->run_while_pip_searches(std::chrono::steady_clock::now() + std::chrono::seconds(60)));
   ASSERT_TRUE(studio().pip().target());
   EXPECT_EQ(studio().pip().target()->interval.parts, before[0].parts);
 

@@ -14,6 +14,7 @@
 #include <limits>
 #include <vector>
 
+#include "reconfig/collision/collision_interval.h"
 #include "reconfig/render/occlusion_counter.h"
 #include "reconfig/scene/reconfigurable.h"
 #include "reconfig/view/camera.h"
@@ -43,13 +44,23 @@ struct BestView {
   Eigen::Vector3d direction = Eigen::Vector3d::UnitZ();  ///< from X's center towards the eye
   OcclusionCount pixels;      ///< of X from `camera`, at the counter's resolution
   bool from_motion = false;   ///< chosen between ±(rA × rB), not by sampling
-  int candidates = 0;         ///< views counted
+  int candidates = 0;         ///< views considered
+  /// Of them, views counted with the occluders: the others cover fewer pixels of X than the
+  /// chosen one shows, so they could not beat it.
+  int counted = 0;
 };
+
+/// The request for `interval` of `transition` drawn at `time` (its severity time): its extent,
+/// parts and box, the ground as `scene` has it, the rest as `BestViewRequest` says.
+BestViewRequest interval_view_request(const scene::Reconfigurable& scene, int transition,
+                                      const collision::CollisionInterval& interval, double time);
 
 /// Poses every part but `request.parts` at `request.time` as occluders of `counter` and picks
 /// the view of X.
 /// Ties go to the first candidate (+(rA × rB), then the axis views, then the random ones);
-/// when neither motion normal sees any of X the random directions are tried too.
+/// when neither motion normal sees any of X the random directions are tried too. The answer is
+/// that of counting every candidate, but a candidate in whose image X covers fewer pixels than
+/// a counted one shows is not counted.
 /// @param scene a validated reconfigurable; request.transition and parts valid indices
 BestView best_view(OcclusionCounter& counter, const scene::Reconfigurable& scene, const BestViewRequest& request);
 

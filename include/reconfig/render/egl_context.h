@@ -17,7 +17,8 @@ class ContextError : public std::runtime_error {
 
 /// An EGL display + GL 3.3 core context made current on the constructing thread, with no
 /// surface. Uses `EGL_PLATFORM_SURFACELESS_MESA` (EGL_MESA_platform_surfaceless); throws
-/// `ContextError` naming the step that failed.
+/// `ContextError` naming the step that failed. Several may live at once (e.g. one per thread):
+/// they share the display, which ends with the last of them.
 class EglContext {
  public:
   EglContext();
