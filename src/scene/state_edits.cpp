@@ -52,6 +52,7 @@ std::unique_ptr<Command> delete_state(std::string state, bool with_transitions) 
   std::string label = fmt::format("delete state {}", state);
   return detail::list_edit(std::move(label), [=](Reconfigurable& scene) {
     const int index = detail::state_index(scene, state);
+    if (scene.states.size() == 1) detail::refuse(fmt::format("state \"{}\" is the design's only state: it keeps one", state));
     std::vector<std::string> using_it;
     for (const Transition& transition : scene.transitions)
       if (transition.from == state || transition.to == state) using_it.push_back("\"" + transition.name + "\"");

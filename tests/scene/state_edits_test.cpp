@@ -47,6 +47,9 @@ TEST(DeleteState, IsRefusedWhileATransitionUsesIt) {
   EXPECT_EQ(edited.states.size(), 1u);
   EXPECT_TRUE(edited.transitions.empty());
   expect_refused(scene, delete_state("middle"), "unknown state");
+  History history;
+  history.execute(scene, delete_state("end", true));
+  expect_refused(scene, delete_state("start"), "only state");
 }
 
 TEST(DeleteState, AnUnusedStateGoesWithoutDirtying) {

@@ -27,7 +27,8 @@ std::unique_ptr<Command> add_state(std::string name, std::map<std::string, motio
 std::unique_ptr<Command> rename_state(std::string state, std::string new_name);
 
 /// Removes a state. While transitions start or end there the removal is refused with their
-/// names, unless `with_transitions`, which removes them too.
+/// names, unless `with_transitions`, which removes them too. A design keeps at least one state
+/// (what the editor shows when no transition is open): deleting the last is refused.
 std::unique_ptr<Command> delete_state(std::string state, bool with_transitions = false);
 
 }  // namespace reconfig::scene
