@@ -108,6 +108,11 @@ class Studio {
   bool add_transition_between(int from, int to, scene::Choreography choreography, std::string name = "");
   /// Screen position of state `state`'s node in the state graph.
   std::optional<ImVec2> graph_state_point(int state) const;
+  /// Opens an authoring dialog (what the menu items do) / performs what it asks for (its OK
+  /// button), for tests. @return success; a refusal is in the status line
+  void open_authoring_dialog(AuthoringDialog dialog) { authoring_dialog_ = std::move(dialog); }
+  const std::optional<AuthoringDialog>& authoring_dialog() const { return authoring_dialog_; }
+  bool accept_authoring_dialog(const AuthoringDialog& dialog);
 
   // ---- one frame -------------------------------------------------------------------------
   /// Builds the whole UI for one frame (call between ImGui::NewFrame and ImGui::Render) and
@@ -272,8 +277,6 @@ class Studio {
   void draw_file_authoring_items();
   void draw_design_menu();
   void draw_authoring_dialogs();
-  /// Performs what the dialog asks for. @return success
-  bool accept_authoring_dialog(const AuthoringDialog& dialog);
   /// Right-click menus and node-to-node drags of the state graph (authoring_menu.cpp), given
   /// where its nodes and badges are drawn.
   void handle_graph_authoring(const std::vector<ImVec2>& nodes, const std::vector<ImVec2>& badges, float node_radius);
