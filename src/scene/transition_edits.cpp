@@ -63,7 +63,7 @@ std::unique_ptr<Command> add_transition(std::string name, std::string from, std:
       if (!poses_match(start, end)) transition.tracks[part.name] = default_track(start, end, choreography);
     }
     scene.transitions.push_back(std::move(transition));
-    return detail::structure_changed();
+    return detail::transition_appended(scene);
   });
 }
 
@@ -106,7 +106,7 @@ std::unique_ptr<Command> duplicate_transition(std::string transition, std::strin
     Transition copy = scene.transitions[index];
     copy.name = new_name;
     scene.transitions.push_back(std::move(copy));
-    return detail::structure_changed();
+    return detail::transition_appended(scene);
   });
 }
 

@@ -25,7 +25,8 @@ Reconfigurable with_lifted_state(std::uint32_t seed) {
 TEST(AddTransition, MovesTheDifferingPartsOnStraightPaths) {
   Reconfigurable scene = with_lifted_state(21);
   const auto [dirty, edited] = round_trip(scene, add_transition("lift", "end", "up"));
-  EXPECT_TRUE(dirty.structure_changed);
+  EXPECT_FALSE(dirty.structure_changed);  // only the new transition needs detecting
+  EXPECT_EQ(dirty.added_transitions, std::vector<int>{1});
   const int lift = edited.find_transition("lift");
   ASSERT_EQ(edited.transitions[lift].tracks.size(), 1u);  // only part 0 moves
   const motion::Pose a = edited.states[1].pose_of(scene.parts[0].name), b = edited.states[2].pose_of(scene.parts[0].name);
@@ -95,7 +96,7 @@ TEST(ReverseTransition, PlaysTheSameMotionBackwards) {
 TEST(DuplicateTransition, CopiesItUnderANewName) {
   Reconfigurable scene = testing::random_scene(27, {.parts = 2, .moving = 1});
   const auto [dirty, edited] = round_trip(scene, duplicate_transition("move", "move_lifted"));
-  EXPECT_TRUE(dirty.structure_changed);
+  EXPECT_EQ(dirty.added_transitions, std::vector<int>{1});
   ASSERT_EQ(edited.transitions.size(), 2u);
   EXPECT_EQ(edited.transitions[1].name, "move_lifted");
   EXPECT_EQ(edited.pose_at(1, 0, 0.4).translation, edited.pose_at(0, 0, 0.4).translation);

@@ -25,7 +25,7 @@ Track default_track(const motion::Pose& from, const motion::Pose& to, Choreograp
 
 /// Appends a transition `name` from state `from` to state `to` (which may be the same state)
 /// in which every part whose poses there differ moves by `default_track`; the others hold
-/// still. Detection then runs on every transition (the list changed).
+/// still. Its dirty set names it in `added_transitions`: the collision service detects it alone.
 std::unique_ptr<Command> add_transition(std::string name, std::string from, std::string to,
                                         Choreography choreography = Choreography::kStraight);
 
@@ -39,7 +39,8 @@ std::unique_ptr<Command> delete_transition(std::string transition);
 std::unique_ptr<Command> reverse_transition(std::string transition);
 
 /// Appends a copy of the transition named `new_name`: an alternative choreography between the
-/// same states, to edit on its own (as the bench's `unfold` and `unfold_lifted`).
+/// same states, to edit on its own (as the bench's `unfold` and `unfold_lifted`); detected
+/// alone, as an added one.
 std::unique_ptr<Command> duplicate_transition(std::string transition, std::string new_name);
 
 }  // namespace reconfig::scene

@@ -46,6 +46,12 @@ DirtySet structure_changed() {
   return dirty;
 }
 
+DirtySet transition_appended(const Reconfigurable& scene) {
+  DirtySet dirty;
+  dirty.added_transitions.push_back(static_cast<int>(scene.transitions.size()) - 1);
+  return dirty;
+}
+
 namespace {
 
 /// A part without its mesh.
@@ -135,7 +141,9 @@ class ListEdit final : public Command {
 
   DirtySet revert(Reconfigurable& scene) override {
     restore(scene, *before_);
-    return dirty_;
+    // Taking appended transitions away again shifts nothing before them, but the detector of
+    // each transition is known by its index: start over.
+    return dirty_.added_transitions.empty() ? dirty_ : structure_changed();
   }
 
   std::string label() const override { return label_; }

@@ -33,5 +33,8 @@ std::unique_ptr<Command> list_edit(std::string label, ListMutation edit);
 
 /// The dirty set of a change of the lists themselves (indices shift: detect everything again).
 DirtySet structure_changed();
+/// The dirty set of a transition appended to `scene`'s list (its last): detect it alone. Its
+/// undo reports `structure_changed`.
+DirtySet transition_appended(const Reconfigurable& scene);
 
 }  // namespace reconfig::scene::detail
