@@ -255,6 +255,15 @@ void Studio::restore_view(const ViewNames& names) {
   if (part != selected_part_ || active_transition_ != names.active_index) selected_key_.reset();
   selected_part_ = part;
   if (active_transition_ < 0) playing_ = false;
+  // A hint and the picture-in-picture name parts and transitions by index: after the lists
+  // changed they may name others, or none.
+  const std::array<std::size_t, 3> counts{scene.parts.size(), scene.states.size(), scene.transitions.size()};
+  if (counts != names.counts) {
+    if (hint_job_) hint_job_->wait();
+    hint_job_.reset();
+    hint_.reset();
+    pip_.close();
+  }
 }
 
 }  // namespace reconfig::studio
