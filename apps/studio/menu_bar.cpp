@@ -9,6 +9,7 @@ void Studio::draw_menu_bar() {
   if (ImGui::BeginMenu("File")) {
     if (ImGui::MenuItem("Open...", "Ctrl+O")) show_open_dialog_ = true;
     if (ImGui::MenuItem("Open linkage...")) linkage_panel_.request_open_dialog();
+    draw_file_authoring_items();
     if (ImGui::MenuItem("Save", "Ctrl+S", false, document_ != nullptr)) save();
     if (ImGui::MenuItem("Save as...", nullptr, false, document_ != nullptr)) {
       save_path_input_ = document_->file().string();
@@ -27,6 +28,7 @@ void Studio::draw_menu_bar() {
     if (ImGui::MenuItem("Remove key", "Del", false, selected_key_.has_value())) delete_selected_key();
     ImGui::EndMenu();
   }
+  draw_design_menu();
   if (ImGui::BeginMenu("View")) {
     if (ImGui::MenuItem("Frame all", "F")) frame_all();
     ImGui::MenuItem("Ghosts", nullptr, &show_ghosts);

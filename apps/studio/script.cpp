@@ -7,6 +7,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "authoring_script.h"
 #include "keys.h"
 #include "reconfig/render/image.h"
 
@@ -362,7 +363,7 @@ class Runner {
     } else if (action == "save") {
       const bool saved = args.empty() ? studio().save() : studio().save_as(args[0]);
       if (!saved) fail(studio().status());
-    } else {
+    } else if (!run_authoring_action(frontend_, action, args, [this](const std::string& why) { fail(why); })) {
       fail(fmt::format("unknown action \"{}\"", action));
     }
   }

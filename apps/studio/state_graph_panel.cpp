@@ -60,6 +60,11 @@ std::optional<ImVec2> Studio::graph_edge_point(int transition) const {
   return graph_geometry(document_->scene(), layout_.graph_min, layout_.graph_max).badges[transition];
 }
 
+std::optional<ImVec2> Studio::graph_state_point(int state) const {
+  if (!document_ || state < 0 || state >= static_cast<int>(document_->scene().states.size())) return std::nullopt;
+  return graph_geometry(document_->scene(), layout_.graph_min, layout_.graph_max).nodes[state];
+}
+
 void Studio::draw_state_graph() {
   const PanelRects rects = current_panel_rects();
   begin_panel("State graph", rects.graph_pos, rects.graph_size);
@@ -139,6 +144,7 @@ void Studio::draw_state_graph() {
         selected_key_.reset();
       }
   }
+  handle_graph_authoring(geometry.nodes, geometry.badges, geometry.node_radius);
   ImGui::End();
 }
 

@@ -261,7 +261,9 @@ std::optional<motion::Pose> Studio::selected_pose() const {
 bool Studio::execute(std::unique_ptr<scene::Command> command) {
   if (!document_) return false;
   const std::string label = command->label();
+  const ViewNames view = remember_view();
   const std::string refusal = document_->execute(std::move(command));
+  restore_view(view);
   if (!refusal.empty()) {
     set_status(fmt::format("{}: refused — {}", label, refusal), true);
     return false;
@@ -338,7 +340,10 @@ bool Studio::step_history(bool forward) {
   if (linkage_panel_.lone()) return forward ? linkage_panel_.redo(*this) : linkage_panel_.undo(*this);
   if (!document_) return false;
   const std::string label = forward ? document_->redo_label() : document_->undo_label();
-  if (!(forward ? document_->redo() : document_->undo())) {
+  const ViewNames view = remember_view();
+  const bool stepped = forward ? document_->redo() : document_->undo();
+  restore_view(view);
+  if (!stepped) {
     set_status(forward ? "nothing to redo" : "nothing to undo");
     return false;
   }
@@ -486,6 +491,7 @@ void Studio::draw_modals() {
   path_dialog("Save scene as", show_save_as_dialog_, save_path_input_,
               [&](const std::string& path) { save_as(path); });
 
+  draw_authoring_dialogs();
   if (confirm_close_) ImGui::OpenPopup("Save changes?");
   confirm_close_ = false;
   if (ImGui::BeginPopupModal("Save changes?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {

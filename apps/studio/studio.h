@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "authoring_dialog.h"
 #include "camera_glide.h"
 #include "document.h"
 #include "gizmo.h"
@@ -32,6 +33,7 @@
 #include "reconfig/resolve/auto_resolve.h"
 #include "reconfig/resolve/hints.h"
 #include "reconfig/scene/edits.h"
+#include "reconfig/scene/transition_edits.h"
 #include "reconfig/view/camera.h"
 
 namespace reconfig::studio {
@@ -85,6 +87,33 @@ class Studio {
   bool save_as(const std::filesystem::path& file);
   Document* document() { return document_.get(); }
   const Document* document() const { return document_.get(); }
+
+  // ---- authoring a design (authoring.cpp) -----------------------------------------------
+  /// Starts an empty design that will be saved as `file` (one state, "start"); what was open
+  /// is closed (unsaved edits of it stay in its autosave). @return success
+  bool new_design(const std::filesystem::path& file);
+  /// Imports mesh files as new parts, one undoable step: OBJ, STL, PLY, OFF, glTF/GLB (a file
+  /// with several meshes gives one part per mesh, whose geometry is then saved beside the
+  /// design). Each part is named after its file (or glTF mesh), made unique; the mesh checks'
+  /// warnings (open, non-manifold, self-intersecting) go to the status line. A file that cannot
+  /// be read refuses the whole import, the design untouched. @return success
+  bool import_meshes(const std::vector<std::filesystem::path>& files);
+  /// Replaces the geometry of part `part` with the mesh in `file`, keeping its pivot and poses.
+  bool replace_part_mesh_from(int part, const std::filesystem::path& file);
+  /// Adds a state named `name` holding the pose every part has in the viewport now.
+  bool add_state_from_view(const std::string& name);
+  /// Shows state `state` (no transition open): what clicking its node does.
+  void show_state(int state);
+  /// Adds a transition between states `from` and `to` with a default choreography and opens
+  /// it; `name` "" picks "FROM_to_TO" (made unique).
+  bool add_transition_between(int from, int to, scene::Choreography choreography, std::string name = "");
+  /// Screen position of state `state`'s node in the state graph.
+  std::optional<ImVec2> graph_state_point(int state) const;
+  /// Opens an authoring dialog (what the menu items do) / performs what it asks for (its OK
+  /// button), for tests. @return success; a refusal is in the status line
+  void open_authoring_dialog(AuthoringDialog dialog) { authoring_dialog_ = std::move(dialog); }
+  const std::optional<AuthoringDialog>& authoring_dialog() const { return authoring_dialog_; }
+  bool accept_authoring_dialog(const AuthoringDialog& dialog);
 
   // ---- one frame -------------------------------------------------------------------------
   /// Builds the whole UI for one frame (call between ImGui::NewFrame and ImGui::Render) and
@@ -248,6 +277,24 @@ class Studio {
   void draw_status_bar();
   void draw_modals();
   void draw_collision_settings();
+  /// The authoring menus' items and dialogs (authoring_menu.cpp).
+  void draw_file_authoring_items();
+  void draw_design_menu();
+  void draw_authoring_dialogs();
+  /// Right-click menus and node-to-node drags of the state graph (authoring_menu.cpp), given
+  /// where its nodes and badges are drawn.
+  void handle_graph_authoring(const std::vector<ImVec2>& nodes, const std::vector<ImVec2>& badges, float node_radius);
+  /// What the view refers to, by name, so a structural edit (or its undo) keeps showing the
+  /// same transition, state and part, or something valid (authoring.cpp).
+  struct ViewNames {
+    std::vector<std::string> open_transitions;
+    std::string active_transition, state, part;
+    std::vector<int> open_indices;
+    int active_index = -1, state_index = 0, part_index = -1;
+    std::array<std::size_t, 3> counts{};  ///< parts, states, transitions
+  };
+  ViewNames remember_view() const;
+  void restore_view(const ViewNames& names);
   /// The inspector's section for hints and automatic resolution (resolve_panel.cpp).
   void draw_resolve_section();
   /// The inspector's section for sculpting the selected part (sculpt_panel.cpp).
@@ -366,6 +413,9 @@ class Studio {
   std::unique_ptr<AutoResolveJob> auto_resolve_;
   bool auto_resolve_moves_states_ = false;  ///< the inspector's "states may move"
   SculptSettings sculpt_settings_;  ///< sculpt_panel.cpp
+  std::optional<AuthoringDialog> authoring_dialog_;  ///< authoring_menu.cpp: the open dialog
+  std::optional<int> graph_drag_from_;                 ///< a drag from this state's node
+  int graph_menu_state_ = -1, graph_menu_transition_ = -1;  ///< what the graph's right-click menu is for
   std::unique_ptr<std::future<HintView>> hint_job_;  ///< a hint computed in the background
   bool quit_ = false;
 };

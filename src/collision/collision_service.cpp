@@ -81,6 +81,14 @@ void CollisionService::run() {
       return stopping_ || pending_scene_ != nullptr;
     };
     const int n = static_cast<int>(scene->transitions.size());
+    // Transitions appended at the end get detectors of their own (a new detector detects from
+    // scratch at its first update); the others keep theirs.
+    const bool appended = !dirty.added_transitions.empty() && !dirty.structure_changed &&
+                          static_cast<int>(detectors.size() + dirty.added_transitions.size()) == n;
+    if (appended && trees.size() == scene->parts.size()) {
+      for (int t = static_cast<int>(detectors.size()); t < n; ++t) detectors.emplace_back(t, options_.detector);
+      last_done.resize(n);
+    }
     const bool rebuild = dirty.structure_changed || static_cast<int>(detectors.size()) != n ||
                          trees.size() != scene->parts.size();
     if (rebuild) {

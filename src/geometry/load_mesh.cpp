@@ -40,9 +40,9 @@ Eigen::Matrix4d to_eigen(const aiMatrix4x4& m) {
   return out;
 }
 
-/// Every instance of every mesh of `scene`, placed by its node transforms, merged and welded.
-/// Throws InputError with an empty file name.
-Mesh scene_to_mesh(const aiScene& scene) {
+/// Every instance of every mesh of `scene` (or of mesh `only` alone), placed by its node
+/// transforms, merged and welded. Throws InputError with an empty file name.
+Mesh scene_to_mesh(const aiScene& scene, std::optional<unsigned> only = std::nullopt) {
   std::vector<Eigen::Vector3d> corners;  // raw vertices, one block per placed mesh
   std::vector<Eigen::Vector3i> faces;    // indices into `corners`
   const bool several_meshes = scene.mNumMeshes > 1;
@@ -95,14 +95,16 @@ Mesh scene_to_mesh(const aiScene& scene) {
       auto [node, transform] = stack.back();
       stack.pop_back();
       if (++visited > 10'000'000) throw InputError("", "", "scene graph too large");
-      for (unsigned i = 0; i < node->mNumMeshes; ++i) add_mesh(node->mMeshes[i], transform);
+      for (unsigned i = 0; i < node->mNumMeshes; ++i)
+        if (!only || node->mMeshes[i] == *only) add_mesh(node->mMeshes[i], transform);
       for (unsigned c = 0; c < node->mNumChildren; ++c) {
         const aiNode* child = node->mChildren[c];
         if (child != nullptr) stack.emplace_back(child, transform * to_eigen(child->mTransformation));
       }
     }
   } else {
-    for (unsigned m = 0; m < scene.mNumMeshes; ++m) add_mesh(m, Eigen::Matrix4d::Identity());
+    for (unsigned m = 0; m < scene.mNumMeshes; ++m)
+      if (!only || m == *only) add_mesh(m, Eigen::Matrix4d::Identity());
   }
   if (faces.empty()) throw InputError("", "", "no triangles");
 
@@ -140,8 +142,12 @@ Assimp::Importer& thread_importer() {
   return importer;
 }
 
-/// Converts the scene `importer` just read (or reports why it could not), then frees it.
-Mesh read_scene(Assimp::Importer& importer, const aiScene* scene) {
+/// Converts the scene `importer` just read with `convert` (or reports why it could not), then
+/// frees it.
+template <typename Convert = Mesh (*)(const aiScene&)>
+auto read_scene(Assimp::Importer& importer, const aiScene* scene, Convert convert = [](const aiScene& s) {
+  return scene_to_mesh(s);
+}) {
   struct FreeScene {
     Assimp::Importer& importer;
     ~FreeScene() { importer.FreeScene(); }
@@ -151,7 +157,23 @@ Mesh read_scene(Assimp::Importer& importer, const aiScene* scene) {
     if (why.empty()) why = "unreadable or unsupported mesh file";
     throw InputError("", "", why);
   }
-  return scene_to_mesh(*scene);
+  return convert(*scene);
+}
+
+/// Each mesh of `scene` that has triangles on its own, named as in the file.
+std::vector<NamedMesh> scene_to_meshes(const aiScene& scene) {
+  std::vector<NamedMesh> meshes;
+  for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
+    const aiMesh* mesh = scene.mMeshes[m];
+    if (mesh == nullptr || mesh->mNumFaces == 0) continue;
+    try {
+      meshes.push_back({mesh->mName.C_Str(), scene_to_mesh(scene, m)});
+    } catch (const InputError& error) {
+      if (error.message() != "no triangles") throw;  // only points or lines, or never placed
+    }
+  }
+  if (meshes.empty()) throw InputError("", "", "no triangles");
+  return meshes;
 }
 
 }  // namespace
@@ -167,6 +189,24 @@ Mesh load_mesh(const std::filesystem::path& path, const MeshLoadOptions& options
     // A glTF's buffers may lie in other files, which Assimp reads after the checks.
     detail::check_gltf(bytes, std::filesystem::absolute(path).parent_path(), options.allow_outside_paths);
     return read_scene(importer, importer.ReadFile(path.string(), kImportFlags));
+  } catch (const InputError& e) {
+    throw e.file().empty() ? e.in_file(path.string()) : e;
+  } catch (const std::exception& e) {
+    throw InputError(path.string(), "", std::string("could not read mesh: ") + e.what());
+  }
+}
+
+std::vector<NamedMesh> load_mesh_parts(const std::filesystem::path& path, const MeshLoadOptions& options) {
+  try {
+    const std::string extension = lower_extension(path.extension().string());
+    const std::string bytes = read_input_file(path);
+    if (is_own_format(extension)) return {{"", *read_own_format(extension, bytes)}};
+    Assimp::Importer& importer = thread_importer();
+    if (!detail::looks_like_gltf(extension, bytes))
+      return read_scene(importer, importer.ReadFileFromMemory(bytes.data(), bytes.size(), kImportFlags, extension.c_str()),
+                        scene_to_meshes);
+    detail::check_gltf(bytes, std::filesystem::absolute(path).parent_path(), options.allow_outside_paths);
+    return read_scene(importer, importer.ReadFile(path.string(), kImportFlags), scene_to_meshes);
   } catch (const InputError& e) {
     throw e.file().empty() ? e.in_file(path.string()) : e;
   } catch (const std::exception& e) {

@@ -385,12 +385,13 @@ std::unique_ptr<Command> set_pose_at(const Reconfigurable& scene, std::string tr
   });
 }
 
-std::unique_ptr<Command> replace_part_mesh(std::string part, geometry::Mesh mesh) {
+std::unique_ptr<Command> replace_part_mesh(std::string part, geometry::Mesh mesh, PartSource source) {
   std::string label = fmt::format("replace geometry of {}", part);
-  return std::make_unique<PartEdit>(std::move(label), part, true, [mesh = std::move(mesh)](Reconfigurable& scene, int p) {
+  return std::make_unique<PartEdit>(std::move(label), part, true,
+                                    [mesh = std::move(mesh), source = std::move(source)](Reconfigurable& scene, int p) {
     if (mesh.empty()) refuse("the new geometry has no triangles");
     scene.parts[p].mesh = mesh;
-    scene.parts[p].source = EditedMesh{};
+    scene.parts[p].source = source;
     DirtySet dirty;
     dirty.geometry_changed.push_back(p);
     for (int tr = 0; tr < static_cast<int>(scene.transitions.size()); ++tr) dirty.ranges.push_back({tr, p, 0.0, 1.0});

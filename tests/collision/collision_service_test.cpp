@@ -8,6 +8,7 @@
 #include "reconfig/scene/edits.h"
 #include "reconfig/scene/history.h"
 #include "reconfig/scene/scene_file.h"
+#include "reconfig/scene/transition_edits.h"
 #include "support/test_data.h"
 
 namespace reconfig::collision {
@@ -48,6 +49,41 @@ TEST(CollisionService, PublishesTheIntervalsOfEveryTransition) {
 
 // Every published picture, also the early ones while later transitions are still waiting for
 // detection, names each entry's transition (the UI finds entries by index).
+// An appended transition is detected on its own: the results of the others stand (reported
+// unchanged, where a detection from scratch reports each interval as appeared).
+TEST(CollisionService, AnAppendedTransitionIsDetectedAlone) {
+  CollisionService service;
+  auto scene = std::make_shared<scene::Reconfigurable>(bench_table());
+  service.submit(scene, everything());
+  ASSERT_TRUE(service.wait_until_complete(60s));
+  ASSERT_EQ(service.snapshot()->transitions[0].changes.size(), 2u);
+  for (const IntervalDiffEntry& change : service.snapshot()->transitions[0].changes)
+    ASSERT_EQ(change.change, IntervalChange::kAppeared);
+  auto next = std::make_shared<scene::Reconfigurable>(*scene);
+  scene::History history;
+  const scene::DirtySet dirty = history.execute(*next, scene::duplicate_transition("unfold", "unfold_again"));
+  ASSERT_EQ(dirty.added_transitions, std::vector<int>{2});
+  service.submit(next, dirty);
+  ASSERT_TRUE(service.wait_until_complete(60s));
+  const auto snapshot = service.snapshot();
+  ASSERT_EQ(snapshot->transitions.size(), 3u);
+  EXPECT_EQ(snapshot->transitions[0].intervals.size(), 2u);
+  for (const IntervalDiffEntry& change : snapshot->transitions[0].changes)  // not detected again
+    EXPECT_EQ(change.change, IntervalChange::kUnchanged);
+  EXPECT_EQ(snapshot->transitions[0].changes.size(), 2u);
+  EXPECT_EQ(snapshot->transitions[2].name, "unfold_again");
+  EXPECT_EQ(snapshot->transitions[2].intervals.size(), 2u);
+  for (const IntervalDiffEntry& change : snapshot->transitions[2].changes) EXPECT_EQ(change.change, IntervalChange::kAppeared);
+  // Its undo starts over, and finds what a detection from scratch finds.
+  auto back = std::make_shared<scene::Reconfigurable>(*next);
+  const scene::DirtySet undone = history.undo(*back);
+  EXPECT_TRUE(undone.structure_changed);
+  service.submit(back, undone);
+  ASSERT_TRUE(service.wait_until_complete(60s));
+  ASSERT_EQ(service.snapshot()->transitions.size(), 2u);
+  EXPECT_EQ(service.snapshot()->transitions[0].intervals.size(), 2u);
+}
+
 TEST(CollisionService, EveryPublishedEntryNamesItsTransition) {
   CollisionService service;
   service.submit(std::make_shared<scene::Reconfigurable>(bench_table()), everything());

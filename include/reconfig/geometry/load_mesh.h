@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "reconfig/geometry/mesh.h"
 
@@ -50,6 +51,18 @@ struct MeshLoadOptions {
 ///   or malformed (Assimp's message), there are no triangles, a face refers to a vertex that
 ///   does not exist (`face <i>`), or a coordinate is NaN or infinite (`vertex <i>`).
 Mesh load_mesh(const std::filesystem::path& path, const MeshLoadOptions& options = {});
+
+/// One mesh of a file, with the name the file gives it ("" when none).
+struct NamedMesh {
+  std::string name;
+  Mesh mesh;
+};
+
+/// Reads each mesh of `path` on its own, as `load_mesh` reads them all together: a glTF/GLB
+/// (or another format Assimp reads) with several meshes gives one per mesh that has triangles
+/// (each instance placed by its node transforms; several instances of one mesh stay one mesh);
+/// OBJ, OFF, PLY and single-mesh files give one. Same limits and errors as `load_mesh`.
+std::vector<NamedMesh> load_mesh_parts(const std::filesystem::path& path, const MeshLoadOptions& options = {});
 
 /// Same as `load_mesh`, from the bytes of a file held in memory (formats whose data is spread
 /// over several files, such as glTF with an external .bin, need `load_mesh`).

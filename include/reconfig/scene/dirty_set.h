@@ -21,8 +21,13 @@ struct DirtySet {
   std::vector<int> geometry_changed;
   /// The list of parts, states or transitions itself changed: rebuild everything.
   bool structure_changed = false;
+  /// Transitions appended to the end of the list (their indices): detect those from scratch,
+  /// while the results of the others stand.
+  std::vector<int> added_transitions;
 
-  bool empty() const { return ranges.empty() && geometry_changed.empty() && !structure_changed; }
+  bool empty() const {
+    return ranges.empty() && geometry_changed.empty() && !structure_changed && added_transitions.empty();
+  }
   void merge(const DirtySet& other);
 };
 

@@ -63,7 +63,9 @@ std::unique_ptr<Command> set_transition_tracks(std::string transition, std::map<
 std::unique_ptr<Command> command_sequence(std::string label, std::vector<std::unique_ptr<Command>> steps);
 
 /// Replaces a part's rest geometry; its pivot `center` is kept so poses keep their meaning.
-std::unique_ptr<Command> replace_part_mesh(std::string part, geometry::Mesh mesh);
+/// `source` says where the new geometry comes from: `EditedMesh` (carved, sculpted: saving
+/// writes it beside the design) or the `MeshFile` it was read from.
+std::unique_ptr<Command> replace_part_mesh(std::string part, geometry::Mesh mesh, PartSource source = EditedMesh{});
 
 /// Replaces the design's collision settings (refused if `settings.problem()` names one).
 /// Every transition must then be detected again: the dirty set says the structure changed.
