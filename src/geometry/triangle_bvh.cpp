@@ -1,6 +1,7 @@
 #include "reconfig/geometry/triangle_bvh.h"
 
 #include "reconfig/geometry/closest_point_on_triangle.h"
+#include "reconfig/geometry/moved_vertices.h"
 
 #include <algorithm>
 #include <array>
@@ -125,7 +126,7 @@ void TriangleBvh::visit_overlapping_pairs(const TriangleBvh& other, const OtherN
   // n < 2^31 triangles, leaves of kLeafSize) at most 30 times.
   std::array<Item, 128> stack;
   int top = 0;
-  const Eigen::AlignedBox3d root_box = other_node_box(0);
+  const Eigen::AlignedBox3d root_box = other_node_box(other.nodes_[0]);
   if (!nodes_[0].box.intersects(root_box)) return;
   stack[top++] = {0, 0, root_box};
   static_assert(kPairLeafSize >= kLeafSize);
@@ -159,9 +160,9 @@ void TriangleBvh::visit_overlapping_pairs(const TriangleBvh& other, const OtherN
       if (nodes_[a.right].box.intersects(item.b_box)) stack[top++] = {a.right, item.j, item.b_box};
       if (nodes_[a.left].box.intersects(item.b_box)) stack[top++] = {a.left, item.j, item.b_box};
     } else {
-      const Eigen::AlignedBox3d right = other_node_box(b.right);
+      const Eigen::AlignedBox3d right = other_node_box(other.nodes_[b.right]);
       if (a.box.intersects(right)) stack[top++] = {item.i, b.right, right};
-      const Eigen::AlignedBox3d left = other_node_box(b.left);
+      const Eigen::AlignedBox3d left = other_node_box(other.nodes_[b.left]);
       if (a.box.intersects(left)) stack[top++] = {item.i, b.left, left};
     }
   }
@@ -170,19 +171,13 @@ void TriangleBvh::visit_overlapping_pairs(const TriangleBvh& other, const OtherN
 void TriangleBvh::for_each_overlapping_pair(const TriangleBvh& other,
                                             const std::function<void(int f, int g)>& visit) const {
   visit_overlapping_pairs(
-      other, [&](int j) { return other.nodes_[j].box; }, [&](int k) { return other.ordered_boxes_[k]; }, visit);
+      other, [](const Node& node) { return node.box; }, [&](int k) { return other.ordered_boxes_[k]; }, visit);
 }
 
 void TriangleBvh::for_each_overlapping_pair(const TriangleBvh& other, const Eigen::Isometry3d& other_to_this,
                                             const std::function<void(int f, int g)>& visit) const {
-  MovedVertices moved(other.V_, other_to_this);
-  for_each_overlapping_pair(other, moved, visit);
-}
-
-void TriangleBvh::for_each_overlapping_pair(const TriangleBvh& other, MovedVertices& other_moved,
-                                            const std::function<void(int f, int g)>& visit) const {
-  assert(&other_moved.rest() == &other.V_ && "TriangleBvh: the moved vertices are not the other tree's");
-  const Eigen::Isometry3d& other_to_this = other_moved.map();
+  // Each vertex of `other` is moved once, when first met.
+  MovedVertices other_moved(other.V_, other_to_this);
   const Eigen::Matrix3d R = other_to_this.linear();
   const Eigen::Matrix3d R_abs = R.cwiseAbs();
   // The box around a moved box: its center moved, its half extents through |R| (exact for
@@ -191,8 +186,9 @@ void TriangleBvh::for_each_overlapping_pair(const TriangleBvh& other, MovedVerti
   const std::size_t node_count = other.nodes_.size();
   std::vector<std::uint8_t> node_known(node_count, 0);
   std::unique_ptr<Eigen::Vector3d[]> node_min(new Eigen::Vector3d[node_count]), node_max(new Eigen::Vector3d[node_count]);
-  const auto node_box = [&](int j) {
-    const Eigen::AlignedBox3d& box = other.nodes_[j].box;
+  const auto node_box = [&](const Node& node) {
+    const std::size_t j = &node - other.nodes_.data();
+    const Eigen::AlignedBox3d& box = node.box;
     if (box.isEmpty()) return box;
     if (!node_known[j]) {
       const Eigen::Vector3d c = other_to_this * box.center();

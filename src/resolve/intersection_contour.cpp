@@ -26,11 +26,17 @@ Triangle moved_triangle(const geometry::TriangleBvh& tree, int f, geometry::Move
   return {moved[F(f, 0)], moved[F(f, 1)], moved[F(f, 2)]};
 }
 
-/// Whether the corners of t lie certainly strictly on one side of the plane through p0 with
-/// computed normal n and error coefficient c (`plane_error_coefficient`): then the exact
-/// orientations say so too, and t cannot meet the triangle of that plane. A cheap test that
-/// settles most of the pairs a tree query gives before the exact one.
-bool certainly_beside(const Eigen::Vector3d& p0, const Eigen::Vector3d& n, double c, const Triangle& t) {
+/// Whether the corners of t lie certainly strictly on one side of the plane of triangle p, by
+/// a floating-point test whose error bound makes it certain: then the exact orientations say so
+/// too, and t cannot meet p. A cheap test that settles most of the pairs a tree query gives
+/// before the exact one. The computed n·(q − p0), n = (p1 − p0) × (p2 − p0), is within
+/// sqrt(c)·|q − p0| of the exact orientation determinant for c = 2 (32 ε)² (|n|² + |p1 − p0|²
+/// |p2 − p0|²): twice the bound the exact triangle test uses for its own crossings.
+bool certainly_beside(const Triangle& p, const Triangle& t) {
+  constexpr double bound = 32 * std::numeric_limits<double>::epsilon();
+  const Eigen::Vector3d& p0 = p[0];
+  const Eigen::Vector3d e1 = p[1] - p0, e2 = p[2] - p0, n = e1.cross(e2);
+  const double c = 2 * bound * bound * (n.squaredNorm() + e1.squaredNorm() * e2.squaredNorm());
   int positive = 0, negative = 0;
   for (const Eigen::Vector3d& q : t) {
     const Eigen::Vector3d d = q - p0;
@@ -186,18 +192,15 @@ IntersectionContour intersection_contour(const PartShape& a, const Eigen::Isomet
   const Eigen::Isometry3d b_to_a = place_a.inverse() * place_b;
   const PairContext ctx{a, b, place_a};
   IntersectionContour contour;
-  geometry::MovedVertices b_moved(b.tree().vertices(), b_to_a);
-  a.tree().for_each_overlapping_pair(b.tree(), b_moved, [&](int fa, int fb) {
+  geometry::MovedVertices b_moved(b.tree().vertices(), b_to_a);  // each of b's corners moved once
+  a.tree().for_each_overlapping_pair(b.tree(), b_to_a, [&](int fa, int fb) {
     // The exact test below decides the same as these two filters where they are certain.
     const Triangle tb = moved_triangle(b.tree(), fb, b_moved);
-    const Eigen::Vector3d a0 = a.tree().vertices().row(a.tree().faces()(fa, 0));
-    if (certainly_beside(a0, a.face_normals[fa], a.face_plane_errors[fa], tb)) return;
     const Triangle ta = rest_triangle(a.tree(), fa);
-    const Eigen::Vector3d e1 = tb[1] - tb[0], e2 = tb[2] - tb[0], nb = e1.cross(e2);
-    if (certainly_beside(tb[0], nb, plane_error_coefficient(nb, e1, e2), ta)) return;
+    if (certainly_beside(ta, tb) || certainly_beside(tb, ta)) return;
     const geometry::TriangleContact contact = geometry::intersect_triangles(ta[0], ta[1], ta[2], tb[0], tb[1], tb[2]);
     if (!contact.intersect || contact.coplanar || contact.points.size() != 2) return;
-    const CrossingPair crossing{fa, fb, ta, tb, unit_normal(ta), nb.normalized()};
+    const CrossingPair crossing{fa, fb, ta, tb, unit_normal(ta), unit_normal(tb)};
     const double weight = edge_weight(ta, fa, a, Eigen::Isometry3d::Identity(), tb[0], crossing.nb) *
                           edge_weight(tb, fb, b, b_to_a, ta[0], crossing.na);
     if (weight == 0) return;

@@ -3,7 +3,6 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
-#include <limits>
 #include <map>
 #include <utility>
 #include <numeric>
@@ -40,11 +39,6 @@ std::vector<std::array<int, 3>> face_neighbors(const geometry::Mesh& mesh) {
 
 }  // namespace
 
-double plane_error_coefficient(const Eigen::Vector3d& n, const Eigen::Vector3d& e1, const Eigen::Vector3d& e2) {
-  constexpr double bound = 32 * std::numeric_limits<double>::epsilon();
-  return 2 * bound * bound * (n.squaredNorm() + e1.squaredNorm() * e2.squaredNorm());
-}
-
 PartShape::PartShape(const geometry::Mesh& mesh, int max_samples) : distance(mesh), bounds(distance.tree().bounds()) {
   const std::vector<double> area = vertex_areas(mesh);
   const int n = mesh.vertex_count();
@@ -58,15 +52,6 @@ PartShape::PartShape(const geometry::Mesh& mesh, int max_samples) : distance(mes
     sample_weights.push_back(weight);
   }
   neighbors = face_neighbors(mesh);
-  const Eigen::MatrixX3d& V = tree().vertices();
-  const Eigen::MatrixX3i& F = tree().faces();
-  face_normals.resize(F.rows());
-  face_plane_errors.resize(F.rows());
-  for (int f = 0; f < F.rows(); ++f) {
-    const Eigen::Vector3d v0 = V.row(F(f, 0)), e1 = V.row(F(f, 1)).transpose() - v0, e2 = V.row(F(f, 2)).transpose() - v0;
-    face_normals[f] = e1.cross(e2);
-    face_plane_errors[f] = plane_error_coefficient(face_normals[f], e1, e2);
-  }
   closed = std::all_of(neighbors.begin(), neighbors.end(),
                        [](const std::array<int, 3>& across) { return across[0] >= 0 && across[1] >= 0 && across[2] >= 0; });
   const double total = std::accumulate(sample_weights.begin(), sample_weights.end(), 0.0);

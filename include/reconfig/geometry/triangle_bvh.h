@@ -8,8 +8,6 @@
 #include <limits>
 #include <vector>
 
-#include "reconfig/geometry/moved_vertices.h"
-
 namespace reconfig::geometry {
 
 /// Bounding-box hierarchy over triangles, built top-down by median split on the axis of
@@ -37,11 +35,6 @@ class TriangleBvh {
   /// the box of their moved corners. Each pair is visited at most once.
   void for_each_overlapping_pair(const TriangleBvh& other, const Eigen::Isometry3d& other_to_this,
                                  const std::function<void(int f, int g)>& visit) const;
-  /// The same, with `other`'s vertices moved through `other_moved` (its map is
-  /// `other_to_this`; its vertices must be `other.vertices()`): a caller that needs the moved
-  /// corners of the visited triangles too finds them there, mapped once each.
-  void for_each_overlapping_pair(const TriangleBvh& other, MovedVertices& other_moved,
-                                 const std::function<void(int f, int g)>& visit) const;
 
   /// The nearest point of the mesh to a query point.
   struct Nearest {
@@ -62,7 +55,7 @@ class TriangleBvh {
     int left = -1, right = -1;  ///< children, or -1 for a leaf
     int begin = 0, end = 0;     ///< leaf: range in order_
   };
-  /// The pair traversal of both `for_each_overlapping_pair`s: `other_node_box(j)` (node j) and
+  /// The pair traversal of both `for_each_overlapping_pair`s: `other_node_box(node)` and
   /// `other_triangle_box(k)` give `other`'s boxes in this tree's frame (k: the position of the
   /// triangle in `other.order_`).
   template <class OtherNodeBox, class OtherTriangleBox>

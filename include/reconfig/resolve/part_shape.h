@@ -29,24 +29,11 @@ struct PartShape {
   /// neighbors[f][k]: the face across edge k (corners k → k+1) of face f; −1 on a boundary or
   /// a non-manifold edge.
   std::vector<std::array<int, 3>> neighbors;
-  /// Per face f of the tree, the plane through its first corner v0 with normal
-  /// n_f = (v1 − v0) × (v2 − v0) (as computed in doubles, not normalized), and the coefficient
-  /// c_f of its error bound: a point q whose computed n_f·(q − v0) exceeds
-  /// sqrt(c_f)·|q − v0| in magnitude lies on that side of the plane exactly
-  /// (`plane_error_coefficient`).
-  std::vector<Eigen::Vector3d> face_normals;
-  std::vector<double> face_plane_errors;
   /// Every edge has exactly two faces (no −1 in `neighbors`): the signed distance's sign is
   /// exact and Lipschitz.
   bool closed = false;
 
   const geometry::TriangleBvh& tree() const { return distance.tree(); }
 };
-
-/// The coefficient c of the plane test's error bound for the plane through p0 with computed
-/// normal n = fl((p1 − p0) × (p2 − p0)): the computed n·(q − p0) is within sqrt(c)·|q − p0|
-/// of the exact orientation determinant, c = 2 (32 ε)² (|n|² + |p1 − p0|² |p2 − p0|²) (twice
-/// the bound the exact triangle test uses for its own crossings).
-double plane_error_coefficient(const Eigen::Vector3d& n, const Eigen::Vector3d& e1, const Eigen::Vector3d& e2);
 
 }  // namespace reconfig::resolve
