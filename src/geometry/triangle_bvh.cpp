@@ -1,16 +1,22 @@
 #include "reconfig/geometry/triangle_bvh.h"
 
 #include "reconfig/geometry/closest_point_on_triangle.h"
+#include "reconfig/geometry/moved_vertices.h"
 
 #include <algorithm>
 #include <array>
 #include <cassert>
+#include <cstdint>
+#include <memory>
 #include <utility>
 
 namespace reconfig::geometry {
 namespace {
 
 constexpr int kLeafSize = 4;
+/// The pair traversal stops at nodes of at most this many triangles and compares their
+/// triangles' boxes directly: a box comparison costs less than a step down both trees.
+constexpr int kPairLeafSize = 8;
 
 /// Box of triangle f: exactly the min/max of its double coordinates (no rounding involved).
 Eigen::AlignedBox3d triangle_box(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, int f) {
@@ -115,43 +121,49 @@ void TriangleBvh::visit_overlapping_pairs(const TriangleBvh& other, const OtherN
     int i, j;
     Eigen::AlignedBox3d b_box;  ///< other's node j in this frame
   };
-  std::vector<Item> stack{{0, 0, other_node_box(other.nodes_[0])}};
-  stack.reserve(128);
-  // The boxes of the last leaf of `other` met: the depth-first descent meets one leaf of
-  // `other` against many of this tree's in a row.
-  std::vector<Eigen::AlignedBox3d> other_boxes;
+  // Depth-first; a pair is pushed only once its boxes are known to overlap. Each step down
+  // leaves at most one sibling pending, and a path steps down each median-split tree (over
+  // n < 2^31 triangles, leaves of kLeafSize) at most 30 times.
+  std::array<Item, 128> stack;
+  int top = 0;
+  const Eigen::AlignedBox3d root_box = other_node_box(other.nodes_[0]);
+  if (!nodes_[0].box.intersects(root_box)) return;
+  stack[top++] = {0, 0, root_box};
+  static_assert(kPairLeafSize >= kLeafSize);
+  // The moved boxes of the last leaf of `other` met: the depth-first descent meets one leaf
+  // of `other` against many of this tree's in a row.
+  std::array<Eigen::AlignedBox3d, kPairLeafSize> other_boxes;
   int other_boxes_leaf = -1;
-  while (!stack.empty()) {
-    const Item item = stack.back();
-    stack.pop_back();
+  while (top > 0) {
+    const Item item = stack[--top];
     const Node& a = nodes_[item.i];
     const Node& b = other.nodes_[item.j];
-    if (!a.box.intersects(item.b_box)) continue;
-    const bool a_leaf = a.left < 0, b_leaf = b.left < 0;
+    const bool a_leaf = a.end - a.begin <= kPairLeafSize, b_leaf = b.end - b.begin <= kPairLeafSize;
     if (a_leaf && b_leaf) {
       if (other_boxes_leaf != item.j) {
-        other_boxes.clear();
-        for (int k = b.begin; k < b.end; ++k) other_boxes.push_back(other_triangle_box(k));
+        for (int k = b.begin; k < b.end; ++k) other_boxes[k - b.begin] = other_triangle_box(k);
         other_boxes_leaf = item.j;
       }
       for (int k = a.begin; k < a.end; ++k) {
-        const int f = order_[k];
         const Eigen::AlignedBox3d& fbox = ordered_boxes_[k];
         if (!fbox.intersects(item.b_box)) continue;
         for (int l = b.begin; l < b.end; ++l)
-          if (fbox.intersects(other_boxes[l - b.begin])) visit(f, other.order_[l]);
+          if (fbox.intersects(other_boxes[l - b.begin])) visit(order_[k], other.order_[l]);
       }
       continue;
     }
     // Descend the larger (by volume-free measure: diagonal) of two inner nodes, or the inner one.
     const bool split_a =
         b_leaf || (!a_leaf && a.box.diagonal().squaredNorm() >= item.b_box.diagonal().squaredNorm());
+    assert(top + 2 <= static_cast<int>(stack.size()));
     if (split_a) {
-      stack.push_back({a.right, item.j, item.b_box});
-      stack.push_back({a.left, item.j, item.b_box});
+      if (nodes_[a.right].box.intersects(item.b_box)) stack[top++] = {a.right, item.j, item.b_box};
+      if (nodes_[a.left].box.intersects(item.b_box)) stack[top++] = {a.left, item.j, item.b_box};
     } else {
-      stack.push_back({item.i, b.right, other_node_box(other.nodes_[b.right])});
-      stack.push_back({item.i, b.left, other_node_box(other.nodes_[b.left])});
+      const Eigen::AlignedBox3d right = other_node_box(other.nodes_[b.right]);
+      if (a.box.intersects(right)) stack[top++] = {item.i, b.right, right};
+      const Eigen::AlignedBox3d left = other_node_box(other.nodes_[b.left]);
+      if (a.box.intersects(left)) stack[top++] = {item.i, b.left, left};
     }
   }
 }
@@ -164,21 +176,35 @@ void TriangleBvh::for_each_overlapping_pair(const TriangleBvh& other,
 
 void TriangleBvh::for_each_overlapping_pair(const TriangleBvh& other, const Eigen::Isometry3d& other_to_this,
                                             const std::function<void(int f, int g)>& visit) const {
+  // Each vertex of `other` is moved once, when first met.
+  MovedVertices other_moved(other.V_, other_to_this);
   const Eigen::Matrix3d R = other_to_this.linear();
   const Eigen::Matrix3d R_abs = R.cwiseAbs();
   // The box around a moved box: its center moved, its half extents through |R| (exact for
   // the moved box's corners), widened by a few ulps of the coordinates for the rounding of R.
+  // Each is computed once: the traversal meets a node of `other` against many of this tree's.
+  const std::size_t node_count = other.nodes_.size();
+  std::vector<std::uint8_t> node_known(node_count, 0);
+  std::unique_ptr<Eigen::Vector3d[]> node_min(new Eigen::Vector3d[node_count]), node_max(new Eigen::Vector3d[node_count]);
   const auto node_box = [&](const Node& node) {
-    if (node.box.isEmpty()) return node.box;
-    const Eigen::Vector3d c = other_to_this * node.box.center();
-    const Eigen::Vector3d h = R_abs * (0.5 * node.box.sizes());
-    const double pad = 1e-12 * (c.cwiseAbs().maxCoeff() + h.maxCoeff());
-    return Eigen::AlignedBox3d(c - h - Eigen::Vector3d::Constant(pad), c + h + Eigen::Vector3d::Constant(pad));
+    const std::size_t j = &node - other.nodes_.data();
+    const Eigen::AlignedBox3d& box = node.box;
+    if (box.isEmpty()) return box;
+    if (!node_known[j]) {
+      const Eigen::Vector3d c = other_to_this * box.center();
+      const Eigen::Vector3d h = R_abs * (0.5 * box.sizes());
+      const double pad = 1e-12 * (c.cwiseAbs().maxCoeff() + h.maxCoeff());
+      node_min[j] = c - h - Eigen::Vector3d::Constant(pad);
+      node_max[j] = c + h + Eigen::Vector3d::Constant(pad);
+      node_known[j] = 1;
+    }
+    return Eigen::AlignedBox3d(node_min[j], node_max[j]);
   };
   const auto moved_triangle_box = [&](int k) {
     const int g = other.order_[k];
-    Eigen::AlignedBox3d box;
-    for (int c = 0; c < 3; ++c) box.extend(other_to_this * other.V_.row(other.F_(g, c)).transpose());
+    Eigen::AlignedBox3d box(other_moved[other.F_(g, 0)]);
+    box.extend(other_moved[other.F_(g, 1)]);
+    box.extend(other_moved[other.F_(g, 2)]);
     return box;
   };
   visit_overlapping_pairs(other, node_box, moved_triangle_box, visit);

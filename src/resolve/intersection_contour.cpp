@@ -7,6 +7,7 @@
 #include <map>
 #include <tuple>
 
+#include "reconfig/geometry/moved_vertices.h"
 #include "reconfig/geometry/triangle_intersection.h"
 
 namespace reconfig::resolve {
@@ -14,11 +15,36 @@ namespace {
 
 using Triangle = std::array<Eigen::Vector3d, 3>;
 
-Triangle triangle_of(const geometry::TriangleBvh& tree, int f, const Eigen::Isometry3d& to_frame) {
+Triangle rest_triangle(const geometry::TriangleBvh& tree, int f) {
   const Eigen::MatrixX3d& V = tree.vertices();
   const Eigen::MatrixX3i& F = tree.faces();
-  return {to_frame * Eigen::Vector3d(V.row(F(f, 0))), to_frame * Eigen::Vector3d(V.row(F(f, 1))),
-          to_frame * Eigen::Vector3d(V.row(F(f, 2)))};
+  return {V.row(F(f, 0)).transpose(), V.row(F(f, 1)).transpose(), V.row(F(f, 2)).transpose()};
+}
+
+Triangle moved_triangle(const geometry::TriangleBvh& tree, int f, geometry::MovedVertices& moved) {
+  const Eigen::MatrixX3i& F = tree.faces();
+  return {moved[F(f, 0)], moved[F(f, 1)], moved[F(f, 2)]};
+}
+
+/// Whether the corners of t lie certainly strictly on one side of the plane of triangle p, by
+/// a floating-point test whose error bound makes it certain: then the exact orientations say so
+/// too, and t cannot meet p. A cheap test that settles most of the pairs a tree query gives
+/// before the exact one. The computed n·(q − p0), n = (p1 − p0) × (p2 − p0), is within
+/// sqrt(c)·|q − p0| of the exact orientation determinant for c = 2 (32 ε)² (|n|² + |p1 − p0|²
+/// |p2 − p0|²): twice the bound the exact triangle test uses for its own crossings.
+bool certainly_beside(const Triangle& p, const Triangle& t) {
+  constexpr double bound = 32 * std::numeric_limits<double>::epsilon();
+  const Eigen::Vector3d& p0 = p[0];
+  const Eigen::Vector3d e1 = p[1] - p0, e2 = p[2] - p0, n = e1.cross(e2);
+  const double c = 2 * bound * bound * (n.squaredNorm() + e1.squaredNorm() * e2.squaredNorm());
+  int positive = 0, negative = 0;
+  for (const Eigen::Vector3d& q : t) {
+    const Eigen::Vector3d d = q - p0;
+    const double s = n.dot(d);
+    if (!(s * s > c * d.squaredNorm())) return false;  // too close to tell (or NaN)
+    (s > 0 ? positive : negative) += 1;
+  }
+  return positive == 3 || negative == 3;
 }
 
 Eigen::Vector3d unit_normal(const Triangle& t) { return (t[1] - t[0]).cross(t[2] - t[0]).normalized(); }
@@ -33,8 +59,10 @@ double distance_to_segment(const Eigen::Vector3d& p, const Eigen::Vector3d& e0, 
 /// The edge (of either triangle) that point p of their intersection lies on, in a's frame:
 /// (edge part, corner index k of edge k→k+1). Where p lies on several (a corner, or edges of
 /// both triangles) the one crossing the other triangle's plane most steeply is taken: an edge
-/// lying in that plane would make the slide of p along it unbounded.
-std::pair<int, int> edge_through(const Eigen::Vector3d& p, const Triangle& ta, const Triangle& tb) {
+/// lying in that plane would make the slide of p along it unbounded. `normal`: the unit normals
+/// of tb and ta, the planes that a's and b's edges cross.
+std::pair<int, int> edge_through(const Eigen::Vector3d& p, const Triangle& ta, const Triangle& tb,
+                                 const std::array<Eigen::Vector3d, 2>& normal) {
   std::array<double, 6> distance;
   double nearest = std::numeric_limits<double>::infinity();
   for (int e = 0; e < 6; ++e) {
@@ -43,7 +71,6 @@ std::pair<int, int> edge_through(const Eigen::Vector3d& p, const Triangle& ta, c
     nearest = std::min(nearest, distance[e]);
   }
   const double scale = 1 + p.cwiseAbs().maxCoeff();
-  const std::array<Eigen::Vector3d, 2> normal = {unit_normal(tb), unit_normal(ta)};  // the plane each part's edge crosses
   std::pair<int, int> best{0, 0};
   double steepest = -1;
   for (int e = 0; e < 6; ++e) {
@@ -65,11 +92,18 @@ struct PairContext {
   const Eigen::Isometry3d& place_a;  ///< a's frame → world
 };
 
-ContourPoint contour_point(const PairContext& ctx, const Eigen::Vector3d& p, int fa, int fb, const Triangle& ta,
-                           const Triangle& tb) {
-  const auto [edge_part, k] = edge_through(p, ta, tb);
+/// Two triangles that cross (faces fa of a and fb of b), in a's frame, with their unit normals.
+struct CrossingPair {
+  int fa = -1, fb = -1;
+  const Triangle& ta;
+  const Triangle& tb;
+  Eigen::Vector3d na, nb;
+};
+
+ContourPoint contour_point(const PairContext& ctx, const Eigen::Vector3d& p, const CrossingPair& pair) {
+  const auto& [fa, fb, ta, tb, na, nb] = pair;
+  const auto [edge_part, k] = edge_through(p, ta, tb, {nb, na});
   const Triangle& edge_triangle = edge_part == 0 ? ta : tb;
-  const Triangle& plane_triangle = edge_part == 0 ? tb : ta;
   const Eigen::MatrixX3i& F = (edge_part == 0 ? ctx.a : ctx.b).tree().faces();
   const int f = edge_part == 0 ? fa : fb;
   ContourPoint point;
@@ -79,8 +113,7 @@ ContourPoint contour_point(const PairContext& ctx, const Eigen::Vector3d& p, int
   point.triangle = edge_part == 0 ? fb : fa;
   const Eigen::Matrix3d R = ctx.place_a.linear();
   point.edge_direction = R * (edge_triangle[(k + 1) % 3] - edge_triangle[k]);
-  const Eigen::Vector3d n = (plane_triangle[1] - plane_triangle[0]).cross(plane_triangle[2] - plane_triangle[0]);
-  point.plane_normal = R * n.normalized();
+  point.plane_normal = R * (edge_part == 0 ? nb : na);
   return point;
 }
 
@@ -159,19 +192,23 @@ IntersectionContour intersection_contour(const PartShape& a, const Eigen::Isomet
   const Eigen::Isometry3d b_to_a = place_a.inverse() * place_b;
   const PairContext ctx{a, b, place_a};
   IntersectionContour contour;
+  geometry::MovedVertices b_moved(b.tree().vertices(), b_to_a);  // each of b's corners moved once
   a.tree().for_each_overlapping_pair(b.tree(), b_to_a, [&](int fa, int fb) {
-    const Triangle ta = triangle_of(a.tree(), fa, Eigen::Isometry3d::Identity());
-    const Triangle tb = triangle_of(b.tree(), fb, b_to_a);
+    // The exact test below decides the same as these two filters where they are certain.
+    const Triangle tb = moved_triangle(b.tree(), fb, b_moved);
+    const Triangle ta = rest_triangle(a.tree(), fa);
+    if (certainly_beside(ta, tb) || certainly_beside(tb, ta)) return;
     const geometry::TriangleContact contact = geometry::intersect_triangles(ta[0], ta[1], ta[2], tb[0], tb[1], tb[2]);
     if (!contact.intersect || contact.coplanar || contact.points.size() != 2) return;
-    const double weight = edge_weight(ta, fa, a, Eigen::Isometry3d::Identity(), tb[0], unit_normal(tb)) *
-                          edge_weight(tb, fb, b, b_to_a, ta[0], unit_normal(ta));
+    const CrossingPair crossing{fa, fb, ta, tb, unit_normal(ta), unit_normal(tb)};
+    const double weight = edge_weight(ta, fa, a, Eigen::Isometry3d::Identity(), tb[0], crossing.nb) *
+                          edge_weight(tb, fb, b, b_to_a, ta[0], crossing.na);
     if (weight == 0) return;
     ContourSegment segment;
     segment.weight = weight;
     segment.triangle_a = fa;
     segment.triangle_b = fb;
-    for (int e = 0; e < 2; ++e) segment.ends[e] = contour_point(ctx, contact.points[e], fa, fb, ta, tb);
+    for (int e = 0; e < 2; ++e) segment.ends[e] = contour_point(ctx, contact.points[e], crossing);
     contour.segments.push_back(segment);
   });
   // The tree visits pairs in an order that depends on the traversal only: sort for a stable

@@ -79,6 +79,40 @@ TEST(IntersectionContour, MatchesAllTrianglePairsOnRandomPlacements) {
   EXPECT_GT(crossing, 30);  // most placements do cross
 }
 
+/// A corner a hair inside or outside a face, where the contour's floating-point plane test
+/// cannot be sure and must leave the pairs to the exact test: the same segments as all
+/// triangle pairs tested exactly.
+TEST(IntersectionContour, ACornerAHairFromAFaceMatchesAllTrianglePairs) {
+  const geometry::Mesh box = geometry::make_box({1, 1, 1}), ball = geometry::make_sphere(0.5, 2);
+  const PartShape box_shape(box), ball_shape(ball);
+  const Eigen::Quaterniond turn(Eigen::AngleAxisd(0.7, Eigen::Vector3d(0.3, 1, 0.2).normalized()));
+  // The ball's corner nearest the box, turned, is put `gap` beyond the box's face x = 0.5.
+  const Eigen::MatrixX3d turned = ball.V * turn.toRotationMatrix().transpose();
+  Eigen::Index lowest = 0;
+  turned.col(0).minCoeff(&lowest);
+  int crossing = 0, cases = 0;
+  for (double gap : {-1e-6, -1e-9, -1e-12, -1e-14, 0.0, 1e-14, 1e-12, 1e-9}) {
+    const Eigen::Vector3d at(0.5 + gap - turned(lowest, 0), 0.0123 - turned(lowest, 1), 0.0311 - turned(lowest, 2));
+    const Eigen::Isometry3d pa = place({0, 0, 0}), pb = place(at, turn);
+    const IntersectionContour contour = intersection_contour(box_shape, pa, ball_shape, pb);
+    int reference = 0;  // segments of all triangle pairs
+    for (int f = 0; f < box.face_count(); ++f)
+      for (int g = 0; g < ball.face_count(); ++g) {
+        const auto corner = [](const geometry::Mesh& m, const Eigen::Isometry3d& p, int h, int k) {
+          return Eigen::Vector3d(p * Eigen::Vector3d(m.V.row(m.F(h, k))));
+        };
+        const auto c = geometry::intersect_triangles(corner(box, pa, f, 0), corner(box, pa, f, 1), corner(box, pa, f, 2),
+                                                     corner(ball, pb, g, 0), corner(ball, pb, g, 1), corner(ball, pb, g, 2));
+        reference += c.intersect && !c.coplanar && c.points.size() == 2;
+      }
+    EXPECT_EQ(static_cast<int>(contour.segments.size()), reference) << "gap " << gap;
+    crossing += reference > 0;
+    ++cases;
+  }
+  EXPECT_GE(crossing, 3);     // the corners inside cross ...
+  EXPECT_LT(crossing, cases);  // ... and those outside do not
+}
+
 TEST(IntersectionContour, DegenerateContactsGiveFiniteAnswers) {
   const PartShape box(geometry::make_box({1, 1, 1}));
   // Faces touching face to face (coplanar): no curve.
