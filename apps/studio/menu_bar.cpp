@@ -30,6 +30,8 @@ void Studio::draw_menu_bar() {
     if (ImGui::MenuItem("Frame all", "F")) frame_all();
     ImGui::MenuItem("Ghosts", nullptr, &show_ghosts);
     ImGui::MenuItem("Collision boxes", nullptr, &show_intervals);
+    if (bool envelope = shaping_.envelope_shown(); ImGui::MenuItem("Swept envelope of the selected part", nullptr, &envelope))
+      shaping_.set_envelope_shown(envelope);
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Collisions")) {
@@ -38,6 +40,9 @@ void Studio::draw_menu_bar() {
     if (ImGui::MenuItem("Resolve this transition automatically", nullptr, false,
                         document_ && active_transition_ >= 0 && !auto_resolve_))
       start_auto_resolve();
+    if (ImGui::MenuItem("Carve...", nullptr, false, document_ && selected_part_ >= 0 && active_transition_ >= 0 &&
+                                                        !shaping_.carving()))
+      shaping_.show_carve_window(*this);
     ImGui::EndMenu();
   }
   if (document_ && ImGui::BeginMenu("Transitions")) {

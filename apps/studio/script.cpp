@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "keys.h"
+#include "shaping_script.h"
 #include "reconfig/render/image.h"
 
 namespace reconfig::studio {
@@ -348,6 +349,8 @@ class Runner {
     } else if (action == "save") {
       const bool saved = args.empty() ? studio().save() : studio().save_as(args[0]);
       if (!saved) fail(studio().status());
+    } else if (std::string problem; perform_shaping_action(frontend_, action, args, problem)) {
+      if (!problem.empty()) fail(problem);
     } else {
       fail(fmt::format("unknown action \"{}\"", action));
     }

@@ -161,6 +161,8 @@ void Studio::frame(std::chrono::steady_clock::time_point now) {
   draw_timeline();
   pip_.update(*this);
   pip_.draw(*this);
+  shaping_.update(*this);
+  shaping_.draw(*this);
   draw_status_bar();
   draw_modals();
   draw_collision_settings();

@@ -25,6 +25,7 @@
 #include "gizmo.h"
 #include "handle_drag.h"
 #include "pip_panel.h"
+#include "shaping_panel.h"
 #include "reconfig/render/occlusion_counter.h"
 #include "reconfig/render/render_target.h"
 #include "reconfig/render/renderer.h"
@@ -66,6 +67,8 @@ struct StudioOptions {
 };
 
 class Studio {
+  friend class ShapingPanel;  // its status messages
+
  public:
   /// Needs the GL context current (the renderer and viewport image live in it).
   explicit Studio(StudioOptions options = {});
@@ -195,6 +198,8 @@ class Studio {
   /// The picture-in-picture panel (pip_panel.h).
   PipPanel& pip() { return pip_; }
   const PipPanel& pip() const { return pip_; }
+  /// Carving and the swept envelope (shaping_panel.h).
+  ShapingPanel& shaping() { return shaping_; }
 
   // ---- what the UI shows (for tests and scripts) ----------------------------------------
   int active_transition() const { return active_transition_; }
@@ -303,6 +308,7 @@ class Studio {
     bool intervals = false;
     bool detailed = true;  ///< full meshes (false: the coarse ones drawn while things move)
     std::array<std::int64_t, 2> hint{-1, 0};  ///< the hint's part and design version (arrows)
+    bool envelope = false;                     ///< the swept envelope is shown
     bool operator==(const ViewportInputs& other) const;
   };
   std::optional<ViewportInputs> last_viewport_inputs_;
@@ -312,6 +318,7 @@ class Studio {
   std::optional<CameraGlide> camera_glide_;  ///< a flight to a best view in progress
   std::unique_ptr<render::OcclusionCounter> occlusion_counter_;  ///< made at the first best view
   PipPanel pip_;
+  ShapingPanel shaping_;
 
   std::vector<int> open_transitions_;
   int active_transition_ = -1;
