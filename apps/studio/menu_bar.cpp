@@ -38,6 +38,8 @@ void Studio::draw_menu_bar() {
       if (linkage_panel_.shown()) linkage_panel_.close();
       else linkage_panel_.open_drive(*this, active_transition_);
     }
+    if (bool envelope = shaping_.envelope_shown(); ImGui::MenuItem("Swept envelope of the selected part", nullptr, &envelope))
+      shaping_.set_envelope_shown(envelope);
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Collisions")) {
@@ -46,6 +48,9 @@ void Studio::draw_menu_bar() {
     if (ImGui::MenuItem("Resolve this transition automatically", nullptr, false,
                         document_ && active_transition_ >= 0 && !auto_resolve_))
       start_auto_resolve();
+    if (ImGui::MenuItem("Carve...", nullptr, false, document_ && selected_part_ >= 0 && active_transition_ >= 0 &&
+                                                        !shaping_.carving()))
+      shaping_.show_carve_window(*this);
     ImGui::EndMenu();
   }
   if (document_ && ImGui::BeginMenu("Transitions")) {

@@ -9,6 +9,7 @@
 
 #include "authoring_script.h"
 #include "keys.h"
+#include "shaping_script.h"
 #include "reconfig/render/image.h"
 
 namespace reconfig::studio {
@@ -363,6 +364,8 @@ class Runner {
     } else if (action == "save") {
       const bool saved = args.empty() ? studio().save() : studio().save_as(args[0]);
       if (!saved) fail(studio().status());
+    } else if (std::string problem; perform_shaping_action(frontend_, action, args, problem)) {
+      if (!problem.empty()) fail(problem);
     } else if (!run_authoring_action(frontend_, action, args, [this](const std::string& why) { fail(why); })) {
       fail(fmt::format("unknown action \"{}\"", action));
     }

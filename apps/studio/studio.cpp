@@ -166,6 +166,8 @@ void Studio::frame(std::chrono::steady_clock::time_point now) {
   linkage_panel_.draw(*this);  // after the timeline: a linkage opened alone covers it
   pip_.update(*this);
   pip_.draw(*this);
+  shaping_.update(*this);
+  shaping_.draw(*this);
   draw_status_bar();
   draw_modals();
   draw_collision_settings();

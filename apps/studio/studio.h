@@ -27,6 +27,7 @@
 #include "handle_drag.h"
 #include "linkage_panel.h"
 #include "pip_panel.h"
+#include "shaping_panel.h"
 #include "reconfig/render/occlusion_counter.h"
 #include "reconfig/render/render_target.h"
 #include "reconfig/render/renderer.h"
@@ -69,6 +70,8 @@ struct StudioOptions {
 };
 
 class Studio {
+  friend class ShapingPanel;  // its status messages
+
  public:
   /// Needs the GL context current (the renderer and viewport image live in it).
   explicit Studio(StudioOptions options = {});
@@ -227,6 +230,8 @@ class Studio {
   const PipPanel& pip() const { return pip_; }
   /// The linkage panel (linkage_panel.h).
   LinkagePanel& linkage_panel() { return linkage_panel_; }
+  /// Carving and the swept envelope (shaping_panel.h).
+  ShapingPanel& shaping() { return shaping_; }
 
   // ---- what the UI shows (for tests and scripts) ----------------------------------------
   int active_transition() const { return active_transition_; }
@@ -354,6 +359,7 @@ class Studio {
     bool intervals = false;
     bool detailed = true;  ///< full meshes (false: the coarse ones drawn while things move)
     std::array<std::int64_t, 2> hint{-1, 0};  ///< the hint's part and design version (arrows)
+    bool envelope = false;                     ///< the swept envelope is shown
     bool operator==(const ViewportInputs& other) const;
   };
   std::optional<ViewportInputs> last_viewport_inputs_;
@@ -364,6 +370,7 @@ class Studio {
   std::unique_ptr<render::OcclusionCounter> occlusion_counter_;  ///< made at the first best view
   PipPanel pip_;
   LinkagePanel linkage_panel_;
+  ShapingPanel shaping_;
 
   std::vector<int> open_transitions_;
   int active_transition_ = -1;

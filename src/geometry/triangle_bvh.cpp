@@ -225,6 +225,8 @@ TriangleBvh::Nearest TriangleBvh::nearest(const Eigen::Vector3d& q, double max_d
     const Node& node = nodes_[index];
     if (node.left < 0) {
       for (int i = node.begin; i < node.end; ++i) {
+        // The triangle's box is no farther than the triangle (a little slack for rounding).
+        if (ordered_boxes_[i].squaredExteriorDistance(q) > best_d2 * (1 + 1e-9)) continue;
         const int f = order_[i];
         const Eigen::Vector3d p = closest_point_on_triangle(q, V_.row(F_(f, 0)).transpose(), V_.row(F_(f, 1)).transpose(),
                                                             V_.row(F_(f, 2)).transpose())

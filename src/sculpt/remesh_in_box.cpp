@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <set>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -10,19 +11,42 @@ namespace {
 
 constexpr int kMaxPasses = 8;
 
-/// The working copy: growable vertex and face lists.
+/// The part of the mesh that may change: the faces with a vertex in the box (local face
+/// numbers in the order of the mesh's, then the new faces), the vertices by their index in the
+/// mesh (new ones numbered after its last), so a remesh costs little beyond the box.
 struct Work {
-  std::vector<Eigen::Vector3d> V, N;
-  std::vector<std::array<int, 3>> F;  ///< a removed face has F[f][0] = −1
-  std::vector<char> in_box;           ///< per vertex
+  Eigen::MatrixX3d& mesh_V;
+  Eigen::MatrixX3d& mesh_N;
+  int original_vertices = 0;
+  std::vector<Eigen::Vector3d> new_V = {}, new_N = {};
+  std::vector<std::array<int, 3>> F = {};  ///< a removed face has F[f][0] = −1
+  std::vector<int> original_face = {};     ///< per local face of the mesh's, its index there
+  std::vector<char> in_box = {};           ///< per vertex
   bool normals = false;
 
-  double length(int a, int b) const { return (V[a] - V[b]).norm(); }
+  Eigen::Vector3d position(int v) const {
+    return v < original_vertices ? Eigen::Vector3d(mesh_V.row(v)) : new_V[v - original_vertices];
+  }
+  Eigen::Vector3d normal(int v) const {
+    if (!normals) return Eigen::Vector3d::Zero();
+    return v < original_vertices ? Eigen::Vector3d(mesh_N.row(v)) : new_N[v - original_vertices];
+  }
+  void set_position(int v, const Eigen::Vector3d& p) {
+    if (v < original_vertices) mesh_V.row(v) = p.transpose();
+    else new_V[v - original_vertices] = p;
+  }
+  void set_normal(int v, const Eigen::Vector3d& n) {
+    if (!normals) return;
+    if (v < original_vertices) mesh_N.row(v) = n.transpose();
+    else new_N[v - original_vertices] = n;
+  }
+  int vertex_count() const { return original_vertices + static_cast<int>(new_V.size()); }
+  double length(int a, int b) const { return (position(a) - position(b)).norm(); }
   int add_vertex(const Eigen::Vector3d& p, const Eigen::Vector3d& n, bool inside) {
-    V.push_back(p);
-    N.push_back(n);
+    new_V.push_back(p);
+    new_N.push_back(n);
     in_box.push_back(inside);
-    return static_cast<int>(V.size()) - 1;
+    return vertex_count() - 1;
   }
 };
 
@@ -87,9 +111,9 @@ int split_pass(Work& work, const Eigen::AlignedBox3d& box, double max_edge) {
     if (used[long_edge.faces[0]] || used[long_edge.faces[1]]) continue;
     used[long_edge.faces[0]] = used[long_edge.faces[1]] = 1;
     const auto [a, b] = long_edge.edge;
-    Eigen::Vector3d n = work.N[a] + work.N[b];
+    Eigen::Vector3d n = work.normal(a) + work.normal(b);
     if (n.norm() > 0) n.normalize();
-    const Eigen::Vector3d p = (work.V[a] + work.V[b]) / 2;
+    const Eigen::Vector3d p = (work.position(a) + work.position(b)) / 2;
     const int m = work.add_vertex(p, n, box.contains(p));
     split_face(work, long_edge.faces[0], a, b, m);
     split_face(work, long_edge.faces[1], a, b, m);
@@ -99,11 +123,13 @@ int split_pass(Work& work, const Eigen::AlignedBox3d& box, double max_edge) {
 }
 
 Eigen::Vector3d face_normal(const Work& work, const std::array<int, 3>& t) {
-  return (work.V[t[1]] - work.V[t[0]]).cross(work.V[t[2]] - work.V[t[0]]);
+  return (work.position(t[1]) - work.position(t[0])).cross(work.position(t[2]) - work.position(t[0]));
 }
 
+using VertexFaces = std::unordered_map<int, std::vector<int>>;
+
 /// Collapses b into a (moved to the midpoint) if it keeps the mesh a manifold and no face turns over.
-bool try_collapse(Work& work, const std::vector<std::vector<int>>& vertex_faces, int a, int b, double max_edge) {
+bool try_collapse(Work& work, VertexFaces& vertex_faces, int a, int b, double max_edge) {
   std::set<int> around_a, around_b;
   for (int f : vertex_faces[a]) around_a.insert(work.F[f].begin(), work.F[f].end());
   for (int f : vertex_faces[b]) around_b.insert(work.F[f].begin(), work.F[f].end());
@@ -111,23 +137,23 @@ bool try_collapse(Work& work, const std::vector<std::vector<int>>& vertex_faces,
   for (int v : around_a)
     if (v != a && v != b && around_b.count(v)) shared.push_back(v);
   if (shared.size() != 2 || around_a.size() <= 4 || around_b.size() <= 4) return false;  // link condition, no tetrahedra
-  const Eigen::Vector3d m = (work.V[a] + work.V[b]) / 2;
+  const Eigen::Vector3d m = (work.position(a) + work.position(b)) / 2;
   for (int v : {a, b})
     for (int f : vertex_faces[v]) {
       const auto& t = work.F[f];
       if (std::count(t.begin(), t.end(), a) && std::count(t.begin(), t.end(), b)) continue;  // removed
       const Eigen::Vector3d before = face_normal(work, t);
-      const Eigen::Vector3d saved = work.V[v];
-      work.V[v] = m;
+      const Eigen::Vector3d saved = work.position(v);
+      work.set_position(v, m);
       const Eigen::Vector3d after = face_normal(work, t);
-      work.V[v] = saved;
+      work.set_position(v, saved);
       if (!(after.dot(before) > 0.2 * before.norm() * after.norm())) return false;
       for (int w : t)
-        if (w != v && (work.V[w] - m).norm() > max_edge) return false;
+        if (w != v && (work.position(w) - m).norm() > max_edge) return false;
     }
-  work.V[a] = m;
-  Eigen::Vector3d n = work.N[a] + work.N[b];
-  if (n.norm() > 0) work.N[a] = n.normalized();
+  work.set_position(a, m);
+  const Eigen::Vector3d n = work.normal(a) + work.normal(b);
+  if (n.norm() > 0) work.set_normal(a, n.normalized());
   for (int f : vertex_faces[a]) {
     auto& t = work.F[f];
     if (std::count(t.begin(), t.end(), b)) t[0] = -1;
@@ -150,12 +176,12 @@ int collapse_pass(Work& work, double min_edge, double max_edge) {
   }
   if (short_edges.empty()) return 0;
   std::sort(short_edges.begin(), short_edges.end());
-  std::vector<std::vector<int>> vertex_faces(work.V.size());  // of the vertices in the box only
+  VertexFaces vertex_faces;  // of the vertices in the box only
   for (int f = 0; f < static_cast<int>(work.F.size()); ++f)
     if (work.F[f][0] >= 0)
       for (int v : work.F[f])
         if (work.in_box[v]) vertex_faces[v].push_back(f);
-  std::vector<char> locked(work.V.size(), 0);
+  std::vector<char> locked(work.vertex_count(), 0);
   int collapses = 0;
   for (const auto& [length, e] : short_edges) {
     const auto [a, b] = e;
@@ -173,17 +199,64 @@ int collapse_pass(Work& work, double min_edge, double max_edge) {
 
 }  // namespace
 
+namespace {
+
+/// Puts the work back into the mesh: the changed faces in place and the new ones after them
+/// (cheap when nothing was collapsed); with collapses, the removed faces and the vertices no
+/// face uses any more are dropped (the rest keep their order).
+void write_back(const Work& work, bool collapsed, geometry::Mesh& mesh, Eigen::MatrixX3d& N) {
+  const int old_faces = mesh.face_count(), added = static_cast<int>(work.F.size() - work.original_face.size());
+  mesh.V.conservativeResize(work.vertex_count(), 3);
+  if (work.normals) N.conservativeResize(work.vertex_count(), 3);
+  for (std::size_t i = 0; i < work.new_V.size(); ++i) {
+    mesh.V.row(work.original_vertices + i) = work.new_V[i].transpose();
+    if (work.normals) N.row(work.original_vertices + i) = work.new_N[i].transpose();
+  }
+  mesh.F.conservativeResize(old_faces + added, 3);
+  std::vector<char> removed(old_faces + added, 0);
+  for (std::size_t f = 0; f < work.F.size(); ++f) {
+    const int target = f < work.original_face.size() ? work.original_face[f] : old_faces + int(f - work.original_face.size());
+    if (work.F[f][0] < 0) removed[target] = 1;
+    else mesh.F.row(target) << work.F[f][0], work.F[f][1], work.F[f][2];
+  }
+  if (!collapsed) return;
+  std::vector<int> index(work.vertex_count(), -1);
+  int faces = 0;
+  for (int f = 0; f < mesh.face_count(); ++f)
+    if (!removed[f]) {
+      mesh.F.row(faces++) = mesh.F.row(f);
+      for (int c = 0; c < 3; ++c) index[mesh.F(f, c)] = 0;
+    }
+  mesh.F.conservativeResize(faces, 3);
+  int vertices = 0;
+  for (int v = 0; v < work.vertex_count(); ++v)
+    if (index[v] == 0) {
+      index[v] = vertices;
+      mesh.V.row(vertices) = mesh.V.row(v);
+      if (work.normals) N.row(vertices) = N.row(v);
+      ++vertices;
+    }
+  mesh.V.conservativeResize(vertices, 3);
+  if (work.normals) N.conservativeResize(vertices, 3);
+  for (int f = 0; f < faces; ++f)
+    for (int c = 0; c < 3; ++c) mesh.F(f, c) = index[mesh.F(f, c)];
+}
+
+}  // namespace
+
 RemeshResult remesh_in_box(const Eigen::AlignedBox3d& box, const RemeshOptions& options, geometry::Mesh& mesh,
                            Eigen::MatrixX3d& N) {
   RemeshResult result;
   if (!(options.max_edge > 0)) return result;
-  Work work;
+  Work work{mesh.V, N, mesh.vertex_count()};
   work.normals = N.rows() == mesh.V.rows();
-  for (int i = 0; i < mesh.vertex_count(); ++i) {
-    const Eigen::Vector3d p = mesh.V.row(i);
-    work.add_vertex(p, work.normals ? Eigen::Vector3d(N.row(i)) : Eigen::Vector3d::Zero(), box.contains(p));
-  }
-  for (int f = 0; f < mesh.face_count(); ++f) work.F.push_back({mesh.F(f, 0), mesh.F(f, 1), mesh.F(f, 2)});
+  work.in_box.resize(mesh.vertex_count());
+  for (int i = 0; i < mesh.vertex_count(); ++i) work.in_box[i] = box.contains(Eigen::Vector3d(mesh.V.row(i)));
+  for (int f = 0; f < mesh.face_count(); ++f)
+    if (work.in_box[mesh.F(f, 0)] || work.in_box[mesh.F(f, 1)] || work.in_box[mesh.F(f, 2)]) {
+      work.F.push_back({mesh.F(f, 0), mesh.F(f, 1), mesh.F(f, 2)});
+      work.original_face.push_back(f);
+    }
   for (int pass = 0; pass < kMaxPasses; ++pass) {
     const int splits = split_pass(work, box, options.max_edge);
     result.splits += splits;
@@ -194,27 +267,7 @@ RemeshResult remesh_in_box(const Eigen::AlignedBox3d& box, const RemeshOptions& 
     result.collapses += collapses;
     if (collapses == 0) break;
   }
-  if (result.splits == 0 && result.collapses == 0) return result;
-  std::vector<int> index(work.V.size(), -1);  // vertices keep their order, unused ones dropped
-  int vertices = 0, faces = 0;
-  for (const auto& t : work.F)
-    if (t[0] >= 0) {
-      ++faces;
-      for (int v : t) index[v] = 0;
-    }
-  for (int& i : index)
-    if (i == 0) i = vertices++;
-  mesh.V.resize(vertices, 3);
-  if (work.normals) N.resize(vertices, 3);
-  for (int v = 0; v < static_cast<int>(work.V.size()); ++v)
-    if (index[v] >= 0) {
-      mesh.V.row(index[v]) = work.V[v].transpose();
-      if (work.normals) N.row(index[v]) = work.N[v].transpose();
-    }
-  mesh.F.resize(faces, 3);
-  faces = 0;
-  for (const auto& t : work.F)
-    if (t[0] >= 0) mesh.F.row(faces++) << index[t[0]], index[t[1]], index[t[2]];
+  if (result.splits > 0 || result.collapses > 0) write_back(work, result.collapses > 0, mesh, N);
   return result;
 }
 

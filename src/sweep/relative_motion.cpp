@@ -59,9 +59,32 @@ RelativeMotion::RelativeMotion(PoseFunction pose, DisplacementBound displacement
 }
 
 std::vector<double> RelativeMotion::time_samples(double tolerance, double& reached, double min_step) const {
-  const motion::AdaptiveSamples samples = motion::adaptive_time_samples(displacement_, t0_, t1_, tolerance, min_step);
-  reached = samples.deviation;
-  return samples.times;
+  // Each step as long as its own bound allows (to 2⁻²⁰ of the rest of the range), not only
+  // the halvings of bisection, which may leave up to twice the steps needed.
+  std::vector<double> times{t0_};
+  reached = 0;
+  for (double a = t0_; a < t1_;) {
+    double bound = displacement_(a, t1_);
+    double b = t1_;
+    if (bound > tolerance) {
+      double fits = 0, fails = t1_ - a;  // step lengths
+      for (int halving = 0; halving < 20; ++halving) {
+        const double length = 0.5 * (fits + fails);
+        const double at = displacement_(a, a + length);
+        if (at <= tolerance) fits = length, bound = at;
+        else fails = length;
+      }
+      if (fits < min_step) {
+        fits = std::min(min_step, t1_ - a);
+        bound = displacement_(a, a + fits);
+      }
+      b = fits >= t1_ - a ? t1_ : a + fits;
+    }
+    reached = std::max(reached, bound);
+    times.push_back(b);
+    a = b;
+  }
+  return times;
 }
 
 RelativeMotion relative_motion(const scene::Reconfigurable& scene, int transition, int part, int relative_to,

@@ -62,6 +62,23 @@ Eigen::AlignedBox3d swept_box(const geometry::Mesh& part, const RelativeMotion& 
   return box;
 }
 
+/// A run [first, end) of consecutive time samples; no point of the part moves more than
+/// `reach` (scene units) from its pose at `first` within the run.
+struct SampleChunk {
+  int first = 0, end = 0;
+  double reach = 0;
+};
+
+/// Runs of `size` samples (the last one shorter).
+std::vector<SampleChunk> sample_chunks(const RelativeMotion& motion, const std::vector<double>& times, int size) {
+  std::vector<SampleChunk> chunks;
+  for (int first = 0; first < int(times.size()); first += size) {
+    const int end = std::min(int(times.size()), first + size);
+    chunks.push_back({first, end, motion.displacement_bound(times[first], times[end - 1])});
+  }
+  return chunks;
+}
+
 /// What one leaf of the swept grid turned out to be.
 struct LeafResult {
   enum Kind { kOutside, kInside, kBand } kind = kOutside;
@@ -70,23 +87,24 @@ struct LeafResult {
 };
 
 /// The evaluation of the swept field F − ℓ on one leaf (values clamped to [−W, W]), by
-/// recursive subdivision of the leaf into blocks of 4³, 2³ and single voxels. A block of n³
+/// recursive subdivision of the leaf into blocks of 4³ and 2³, then the voxels of a 2³ block by
+/// branch and bound over its samples (`evaluate_voxel`). A block of n³
 /// voxels around center c: every voxel x has φ̃_k(x) >= φ̃_k(c) − s_n with s_n = the block's
 /// half diagonal + 2e (φ is 1-Lipschitz, a look-up is within e of it), so with
 /// m = min_k φ̃_k(c): the block is inside when m + s_n < ℓ − W, outside when m − s_n > ℓ + W, and
 /// otherwise only the samples with φ̃_k(c) − s_n < min(m + s_n, ℓ + W) can set a voxel's minimum.
 class LeafEvaluator {
  public:
-  LeafEvaluator(const detail::PartDistance& part_grid, const std::vector<IndexMap>& maps, double h, double level, double band,
-                double lookup_error)
-      : part_grid_(part_grid), maps_(maps), h_(h), level_(level), band_(band), lookup_error_(lookup_error) {}
+  /// @param chunks  runs of consecutive samples, each with how far the part moves within it
+  LeafEvaluator(const detail::PartDistance& part_grid, const std::vector<IndexMap>& maps, std::vector<SampleChunk> chunks,
+                double h, double level, double band, double lookup_error)
+      : part_grid_(part_grid), maps_(maps), chunks_(std::move(chunks)), h_(h), level_(level), band_(band),
+        lookup_error_(lookup_error) {}
 
   LeafResult evaluate(const Coord& origin) const {
-    std::vector<int> all(maps_.size());
-    for (std::size_t k = 0; k < all.size(); ++k) all[k] = static_cast<int>(k);
     std::vector<float> values(FloatTree::LeafNodeType::SIZE, float(band_));  // F − ℓ, x-major
     const Eigen::Vector3d leaf_origin(origin.x(), origin.y(), origin.z());
-    const Kind kind = refine(leaf_origin, Eigen::Vector3i::Zero(), kLeafDim, all, values);
+    const Kind kind = refine(leaf_origin, Eigen::Vector3i::Zero(), kLeafDim, candidates(leaf_origin), values);
     if (kind == kInsideBlock) return {LeafResult::kInside, nullptr, 0};
     if (kind == kOutsideBlock) return {};
     auto leaf = std::make_unique<FloatTree::LeafNodeType>(origin, float(band_), false);
@@ -96,6 +114,24 @@ class LeafEvaluator {
 
  private:
   enum Kind { kInsideBlock, kOutsideBlock, kMixedBlock };
+
+  /// The samples that may matter on the leaf. A run of samples is dropped when its first pose
+  /// proves every pose k of the run farther than ℓ + W + e from every voxel of the leaf:
+  /// φ_k(x) >= φ_first(x) − D (a point inside pose k lies within D of pose first), a look-up
+  /// is within e of φ (or a lower bound beyond the part's band), and the leaf's voxels lie
+  /// within its half diagonal of its center. Such a sample only gives voxels values above
+  /// ℓ + W, which the band clamps to W anyway.
+  std::vector<int> candidates(const Eigen::Vector3d& leaf_origin) const {
+    const Eigen::Vector3d center = leaf_origin + Eigen::Vector3d::Constant(0.5 * (kLeafDim - 1));
+    const double slack = 0.5 * (kLeafDim - 1) * kSqrt3 * h_ + 2 * lookup_error_;
+    std::vector<int> kept;
+    for (const SampleChunk& chunk : chunks_) {
+      const double lower = part_grid_.nearest(maps_[chunk.first].apply(center)) - chunk.reach - 2 * lookup_error_;
+      if (lower > level_ + band_ + slack) continue;
+      for (int k = chunk.first; k < chunk.end; ++k) kept.push_back(k);
+    }
+    return kept;
+  }
 
   /// Fills the n³ block at `local` (voxel offset in the leaf) of `values`; says what it was.
   Kind refine(const Eigen::Vector3d& leaf_origin, const Eigen::Vector3i& local, int n, const std::vector<int>& candidates,
@@ -107,10 +143,6 @@ class LeafEvaluator {
       at_center[c] = part_grid_.nearest(maps_[candidates[c]].apply(center));
       m = std::min(m, at_center[c]);
     }
-    if (n == 1) {
-      values[(local.x() << 6) | (local.y() << 3) | local.z()] = float(std::clamp(m - level_, -band_, band_));
-      return kMixedBlock;
-    }
     const double slack = 0.5 * (n - 1) * kSqrt3 * h_ + 2 * lookup_error_;
     if (m + slack < level_ - band_) {
       fill(local, n, float(-band_), values);
@@ -118,6 +150,17 @@ class LeafEvaluator {
     }
     if (m - slack > level_ + band_) return kOutsideBlock;  // values stay +W
     const double keep_below = std::min(m + slack, level_ + band_) + slack;
+    if (n == 2) {
+      std::vector<std::pair<float, int>> nearest_first;
+      for (std::size_t c = 0; c < candidates.size(); ++c)
+        if (at_center[c] < keep_below) nearest_first.emplace_back(at_center[c], candidates[c]);
+      std::sort(nearest_first.begin(), nearest_first.end());
+      for (int child = 0; child < 8; ++child) {
+        const Eigen::Vector3i voxel = local + Eigen::Vector3i(child >> 2, (child >> 1) & 1, child & 1);
+        evaluate_voxel(leaf_origin, voxel, slack, nearest_first, values);
+      }
+      return kMixedBlock;
+    }
     std::vector<int> kept;
     for (std::size_t c = 0; c < candidates.size(); ++c)
       if (at_center[c] < keep_below) kept.push_back(candidates[c]);
@@ -132,6 +175,21 @@ class LeafEvaluator {
     return inside == 8 ? kInsideBlock : outside == 8 ? kOutsideBlock : kMixedBlock;
   }
 
+  /// One voxel of a 2³ block, F − ℓ clamped to [−W, W], by branch and bound over the block's
+  /// samples sorted by their value at its center: a sample whose value there minus `slack`
+  /// (half the block's diagonal plus two look-up errors) is not below the least value found
+  /// yet, nor below ℓ + W, cannot lower it, and neither can any later one.
+  void evaluate_voxel(const Eigen::Vector3d& leaf_origin, const Eigen::Vector3i& local, double slack,
+                      const std::vector<std::pair<float, int>>& nearest_first, std::vector<float>& values) const {
+    const Eigen::Vector3d x = leaf_origin + local.cast<double>();
+    double best = level_ + band_;
+    for (const auto& [at_center, k] : nearest_first) {
+      if (at_center - slack >= best || best <= level_ - band_) break;
+      best = std::min(best, double(part_grid_.nearest(maps_[k].apply(x))));
+    }
+    values[(local.x() << 6) | (local.y() << 3) | local.z()] = float(std::clamp(best - level_, -band_, band_));
+  }
+
   static void fill(const Eigen::Vector3i& local, int n, float value, std::vector<float>& values) {
     for (int i = 0; i < n; ++i)
       for (int j = 0; j < n; ++j)
@@ -140,6 +198,7 @@ class LeafEvaluator {
 
   const detail::PartDistance& part_grid_;
   const std::vector<IndexMap>& maps_;
+  std::vector<SampleChunk> chunks_;
   double h_, level_, band_, lookup_error_;
 };
 
@@ -219,7 +278,7 @@ SweptVolumeResult swept_volume(const geometry::Mesh& part, const RelativeMotion&
       }
 
   const std::vector<IndexMap> maps = index_maps(motion, times, h);
-  const LeafEvaluator evaluator(part_distance, maps, h, result.level, band, lookup_error);
+  const LeafEvaluator evaluator(part_distance, maps, sample_chunks(motion, times, 16), h, result.level, band, lookup_error);
   std::vector<LeafResult> leaves(origins.size());
   std::atomic<bool> cancelled{false};
   std::atomic<std::size_t> done{0};

@@ -34,8 +34,9 @@ class RelativeMotion {
   double end_time() const { return t1_; }
 
   /// Times t0 = τ_0 < … < τ_m = t1 such that no point of B moves more than `tolerance`
-  /// over any [τ_k, τ_{k+1}] (recursive bisection on `displacement_bound`; a step is never
-  /// narrower than `min_step`, and then the bound reached is reported).
+  /// over any [τ_k, τ_{k+1}]: each step from τ_k as long as `displacement_bound` allows (found
+  /// by bisection on its length), never shorter than `min_step` (and then the bound reached
+  /// is reported).
   /// @param tolerance  > 0
   /// @param reached    out: the largest bound over the steps (may exceed `tolerance` only
   ///                   when a step hit `min_step`)

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "reconfig/geometry/closest_point_on_triangle.h"
 #include "reconfig/geometry/triangle_bvh.h"
 
 namespace reconfig::sweep::detail {
@@ -13,6 +14,12 @@ namespace {
 /// (b − a) × (p − a) in the yz plane, computed with the edge's endpoints in index order so
 /// that the two faces of a shared edge get exactly opposite values; `forward` says whether the
 /// face runs a → b in that order.
+Eigen::Vector3d closest_point(const geometry::Mesh& part, int f, const Eigen::Vector3d& q) {
+  return geometry::closest_point_on_triangle(q, part.V.row(part.F(f, 0)).transpose(), part.V.row(part.F(f, 1)).transpose(),
+                                             part.V.row(part.F(f, 2)).transpose())
+      .point;
+}
+
 double edge_function(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& p, bool forward) {
   const double value = (b.x() - a.x()) * (p.y() - a.y()) - (b.y() - a.y()) * (p.x() - a.x());
   return forward ? value : -value;
@@ -31,17 +38,40 @@ PartDistance::PartDistance(const geometry::Mesh& part, double h, double band, do
   std::vector<char> inside(std::size_t(size_.prod()), 0);
   compute_signs(part, inside);
   values_.resize(inside.size());
+  compute_distances(part, inside);
+}
+
+void PartDistance::compute_distances(const geometry::Mesh& part, const std::vector<char>& inside) {
   const geometry::TriangleBvh tree(part.V, part.F);
-  tbb::parallel_for(0, size_.x(), [&](int i) {
-    for (int j = 0; j < size_.y(); ++j)
-      for (int k = 0; k < size_.z(); ++k) {
-        const Eigen::Vector3d q = (lo_ + Eigen::Vector3i(i, j, k)).cast<double>() * h_;
-        const bool in = inside[index(i, j, k)];
-        const double limit = in ? inner_band_ : band_;
-        const geometry::TriangleBvh::Nearest hit = tree.nearest(q, limit);
-        const double distance = hit.triangle < 0 ? limit : std::min(limit, (q - hit.point).norm());
-        values_[index(i, j, k)] = float(in ? -distance : distance);
+  // Row by row along z: the triangle nearest to the previous point bounds the distance from
+  // above (nearly tight: a tight start for the search), and a point with no triangle within
+  // its band plus m steps puts the next m points beyond their bands too (distances are
+  // 1-Lipschitz).
+  constexpr int kSkip = 4;
+  const double outer_limit = std::max(band_, inner_band_);
+  tbb::parallel_for(0, size_.x() * size_.y(), [&](int row) {
+    const int i = row / size_.y(), j = row % size_.y();
+    int seed = -1;        // the nearest triangle to the last point that found one
+    int beyond_until = -1;  // points up to this one lie beyond their bands
+    for (int k = 0; k < size_.z(); ++k) {
+      const bool in = inside[index(i, j, k)];
+      const double limit = in ? inner_band_ : band_;
+      double distance = limit;
+      const Eigen::Vector3d q = (lo_ + Eigen::Vector3i(i, j, k)).cast<double>() * h_;
+      if (k <= beyond_until) {
+      } else if (seed >= 0) {
+        const double upper = std::min(limit, (q - closest_point(part, seed, q)).norm());
+        const geometry::TriangleBvh::Nearest hit = tree.nearest(q, upper * (1 + 1e-12));
+        distance = hit.triangle < 0 ? upper : std::sqrt(hit.squared_distance);
+        if (hit.triangle >= 0) seed = hit.triangle;
+      } else {
+        const geometry::TriangleBvh::Nearest hit = tree.nearest(q, outer_limit + kSkip * h_);
+        if (hit.triangle < 0) beyond_until = k + kSkip;
+        else distance = std::sqrt(hit.squared_distance);
+        seed = hit.triangle;
       }
+      values_[index(i, j, k)] = float(in ? -std::min(distance, limit) : std::min(distance, limit));
+    }
   });
 }
 

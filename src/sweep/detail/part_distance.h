@@ -32,6 +32,7 @@ class PartDistance {
  private:
   std::size_t index(int i, int j, int k) const { return (std::size_t(i) * size_.y() + j) * size_.z() + k; }
   void compute_signs(const geometry::Mesh& part, std::vector<char>& inside) const;
+  void compute_distances(const geometry::Mesh& part, const std::vector<char>& inside);
 
   double h_ = 1, band_ = 1, inner_band_ = 1, radius_ = 0;
   Eigen::Vector3d center_ = Eigen::Vector3d::Zero();  ///< index space

@@ -1,0 +1,212 @@
+#include "shaping_panel.h"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+#include <chrono>
+
+#include "reconfig/geometry/bounding_box.h"
+#include "reconfig/scene/edits.h"
+#include "reconfig/sweep/relative_motion.h"
+#include "reconfig/sweep/screw_envelope.h"
+#include "studio.h"
+
+namespace reconfig::studio {
+namespace {
+
+/// The screws approximating `part`'s world motion over `transition`: one per time step in
+/// which no point of it moves more than 1 % of its box's diagonal.
+std::vector<motion::ScrewMotion> part_screws(const scene::Reconfigurable& scene, int transition, int part) {
+  const sweep::RelativeMotion motion = sweep::relative_motion(scene, transition, part, -1);
+  const double size = geometry::bounding_box(scene.parts[part].mesh.V).diagonal().norm();
+  double reached = 0;
+  const std::vector<double> times = motion.time_samples(std::max(0.01 * size, 1e-9), reached);
+  std::vector<motion::ScrewMotion> screws;
+  for (std::size_t k = 0; k + 1 < times.size(); ++k) screws.emplace_back(motion.at(times[k]), motion.at(times[k + 1]));
+  if (screws.empty()) screws.emplace_back(motion.at(0), motion.at(1));
+  return screws;
+}
+
+/// The parts that collide with `part` somewhere in `transition`, by the collision picture.
+std::vector<std::string> colliding_parts(const Studio& studio, int transition, int part) {
+  std::vector<std::string> names;
+  const auto snapshot = studio.collisions();
+  if (!snapshot) return names;
+  const scene::Reconfigurable& scene = studio.document()->scene();
+  for (const auto& t : snapshot->transitions) {
+    if (t.transition != transition) continue;
+    for (const auto& interval : t.intervals) {
+      if (std::find(interval.parts.begin(), interval.parts.end(), part) == interval.parts.end()) continue;
+      for (int other : interval.parts)
+        if (other != part && other < int(scene.parts.size()) &&
+            std::find(names.begin(), names.end(), scene.parts[other].name) == names.end())
+          names.push_back(scene.parts[other].name);
+    }
+  }
+  return names;
+}
+
+}  // namespace
+
+bool ShapingPanel::start_carve(Studio& studio, const CarveSettings& settings) {
+  const Document* document = studio.document();
+  if (!document || studio.selected_part() < 0 || studio.active_transition() < 0) {
+    studio.set_status("carve: select a part and open a transition first", true);
+    return false;
+  }
+  if (job_) {
+    studio.set_status("carve: a carve is already running", true);
+    return false;
+  }
+  const std::shared_ptr<const scene::Reconfigurable> scene = document->shared_scene();
+  sweep::CarveRequest request;
+  request.transition = studio.active_transition();
+  request.part = studio.selected_part();
+  for (const std::string& name : settings.carvers) {
+    const int carver = scene->find_part(name);
+    if (carver < 0 || carver == request.part) {
+      studio.set_status(carver < 0 ? fmt::format("carve: no part \"{}\"", name)
+                                   : fmt::format("carve: {} cannot carve itself", name),
+                        true);
+      return false;
+    }
+    request.carvers.push_back(carver);
+  }
+  if (request.carvers.empty()) {
+    studio.set_status("carve: choose the parts whose motion carves " + scene->parts[request.part].name, true);
+    return false;
+  }
+  if (!(settings.offset >= 0) || !(settings.grid >= 0)) {
+    studio.set_status("carve: the offset and the grid step must be >= 0", true);
+    return false;
+  }
+  request.sweep.offset = settings.offset;
+  request.sweep.grid_step = settings.grid;
+  auto job = std::make_unique<CarveJob>();
+  job->part = scene->parts[request.part].name;
+  job->version = document->version();
+  CarveJob* raw = job.get();
+  request.progress = [raw](double fraction) {
+    raw->progress = fraction;
+    return !raw->cancel.load();
+  };
+  job->result = std::async(std::launch::async, [scene, request] { return sweep::carve_part(*scene, request); });
+  job_ = std::move(job);
+  studio.set_status(fmt::format("carving {} by {}…", job_->part, fmt::join(settings.carvers, ", ")));
+  return true;
+}
+
+void ShapingPanel::cancel_carve(Studio& studio) {
+  if (!job_) return;
+  job_.reset();  // asks the carve to stop and waits for it
+  studio.set_status("carve cancelled; nothing changed");
+}
+
+void ShapingPanel::finish_carve(Studio& studio, sweep::CarveResult result) {
+  const std::string part = job_->part;
+  const std::uint64_t version = job_->version;
+  job_.reset();
+  if (!studio.document() || result.cancelled) return;
+  if (studio.document()->version() != version) {
+    studio.set_status("carve dropped: the design changed while it ran (carve again)", true);
+    return;
+  }
+  if (!result.ok()) {
+    studio.set_status(fmt::format("carve of {} refused: {}", part, result.problem), true);
+    return;
+  }
+  int samples = 0;
+  for (const sweep::SweptVolumeResult& sweep : result.sweeps) samples += sweep.time_samples;
+  const double before = result.volume_before, after = result.volume_after;
+  if (studio.execute(scene::replace_part_mesh(part, std::move(result.mesh))))
+    studio.set_status(fmt::format("carved {}: volume {:.4g} -> {:.4g} ({} time samples)", part, before, after, samples));
+}
+
+void ShapingPanel::show_carve_window(Studio& studio) {
+  if (!studio.document() || studio.selected_part() < 0 || studio.active_transition() < 0) {
+    studio.set_status("carve: select a part and open a transition first", true);
+    return;
+  }
+  CarveSettings settings;
+  settings.carvers = colliding_parts(studio, studio.active_transition(), studio.selected_part());
+  carve_draft_ = settings;
+  const auto& parts = studio.document()->scene().parts;
+  carver_checks_.assign(parts.size(), 0);
+  for (std::size_t p = 0; p < parts.size(); ++p)
+    carver_checks_[p] = std::find(settings.carvers.begin(), settings.carvers.end(), parts[p].name) != settings.carvers.end();
+}
+
+std::shared_ptr<const geometry::Mesh> ShapingPanel::envelope(const Studio& studio) {
+  const Document* document = studio.document();
+  if (!envelope_shown_ || !document || studio.selected_part() < 0 || studio.active_transition() < 0) return nullptr;
+  const EnvelopeKey key{document->shared_scene().get(), studio.active_transition(), studio.selected_part()};
+  if (envelope_key_ != key) {
+    const scene::Reconfigurable& scene = document->scene();
+    const sweep::EnvelopePart part(scene.parts[key.part].mesh);
+    const std::vector<motion::ScrewMotion> screws = part_screws(scene, key.transition, key.part);
+    envelope_ = std::make_shared<const geometry::Mesh>(sweep::screw_envelope(part, screws).mesh);
+    envelope_key_ = key;
+    envelope_scene_ = document->shared_scene();  // keeps the key's address from being reused
+  }
+  return envelope_;
+}
+
+void ShapingPanel::add_to_draw_list(const Studio& studio, render::DrawList& list) {
+  const std::shared_ptr<const geometry::Mesh> mesh = envelope(studio);
+  if (!mesh || mesh->empty()) return;
+  render::MeshItem item;
+  item.V = mesh->V;
+  item.F = mesh->F;
+  item.color = {0.3f, 0.55f, 0.95f};
+  item.opacity = 0.25f;
+  list.meshes.push_back(std::move(item));
+}
+
+void ShapingPanel::update(Studio& studio) {
+  if (job_ && job_->result.wait_for(std::chrono::seconds(0)) == std::future_status::ready)
+    finish_carve(studio, job_->result.get());
+}
+
+void ShapingPanel::draw(Studio& studio) {
+  if (job_) {
+    ImGui::SetNextWindowSize({360, 0}, ImGuiCond_Appearing);
+    if (ImGui::Begin("Carving", nullptr, ImGuiWindowFlags_NoCollapse)) {
+      ImGui::Text("carving %s", job_->part.c_str());
+      ImGui::ProgressBar(float(job_->progress.load()), {-1, 0});
+      if (ImGui::Button("Cancel")) cancel_carve(studio);
+    }
+    ImGui::End();
+  }
+  if (!carve_draft_ || !studio.document()) return;
+  const auto& parts = studio.document()->scene().parts;
+  if (carver_checks_.size() != parts.size() || studio.selected_part() < 0) {
+    carve_draft_.reset();
+    return;
+  }
+  bool open = true;
+  ImGui::SetNextWindowSize({380, 0}, ImGuiCond_Appearing);
+  if (ImGui::Begin("Carve", &open, ImGuiWindowFlags_NoCollapse)) {
+    ImGui::TextWrapped("Carve %s by the volume these parts sweep through it over the open transition:",
+                       parts[studio.selected_part()].name.c_str());
+    for (std::size_t p = 0; p < parts.size(); ++p) {
+      if (int(p) == studio.selected_part()) continue;
+      bool checked = carver_checks_[p];
+      if (ImGui::Checkbox(parts[p].name.c_str(), &checked)) carver_checks_[p] = checked;
+    }
+    ImGui::InputDouble("offset", &carve_draft_->offset, 0, 0, "%.4f");
+    ImGui::InputDouble("grid step (0: auto)", &carve_draft_->grid, 0, 0, "%.4f");
+    if (ImGui::Button("Carve") && !job_) {
+      carve_draft_->carvers.clear();
+      for (std::size_t p = 0; p < parts.size(); ++p)
+        if (carver_checks_[p] && int(p) != studio.selected_part()) carve_draft_->carvers.push_back(parts[p].name);
+      if (start_carve(studio, *carve_draft_)) open = false;
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Close")) open = false;
+  }
+  ImGui::End();
+  if (!open) carve_draft_.reset();
+}
+
+}  // namespace reconfig::studio

@@ -1,0 +1,132 @@
+// Carving and the swept envelope in the studio, driven headless on the bench-table: the
+// backrest carved by the armrests' sweep stops colliding in `unfold` (one undoable edit), a
+// carve can be cancelled, bad requests change nothing, and the envelope of the selected part
+// covers where it goes.
+
+#include <gtest/gtest.h>
+
+#include "reconfig/geometry/bounding_box.h"
+#include "reconfig/geometry/mass_properties.h"
+#include "reconfig/geometry/mesh_check.h"
+#include "script.h"
+#include "studio_test_util.h"
+
+namespace reconfig::studio {
+namespace {
+
+using std::chrono::milliseconds;
+
+class StudioShaping : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    StudioOptions options;
+    options.autosave_interval = milliseconds(0);
+    frontend_ = std::make_unique<HeadlessFrontend>(1000, 700, options);
+    ASSERT_TRUE(studio().open(bench_table_copy())) << studio().status();
+    unfold_ = scene().find_transition("unfold");
+    studio().open_transition(unfold_);
+    frontend_->run_frame();
+    ASSERT_TRUE(frontend_->run_until_collisions_current(milliseconds(60000)));
+  }
+
+  Studio& studio() { return frontend_->studio(); }
+  const scene::Reconfigurable& scene() { return studio().document()->scene(); }
+  int part(const char* name) { return scene().find_part(name); }
+
+  std::size_t intervals_shown() {
+    for (const auto& t : studio().collisions()->transitions)
+      if (t.transition == unfold_) return t.intervals.size();
+    return 0;
+  }
+
+  std::unique_ptr<HeadlessFrontend> frontend_;
+  int unfold_ = -1;
+};
+
+TEST_F(StudioShaping, CarvingTheBackrestByTheArmrestsFreesUnfoldAndUndoRestoresIt) {
+  ASSERT_EQ(intervals_shown(), 2u);  // the backrest hits both armrests
+  const geometry::Mesh before = scene().parts[part("backrest")].mesh;
+  run_script(*frontend_, "carve backrest by armrest_left,armrest_right offset 0.005\n"
+                         "wait-collisions 60\n"
+                         "expect-collisions 0\n"
+                         "expect-status carved backrest\n", "carve.script");
+  const geometry::Mesh& carved = scene().parts[part("backrest")].mesh;
+  EXPECT_TRUE(geometry::check_mesh(carved).is_valid_solid());
+  EXPECT_LT(geometry::mass_properties(carved).volume, geometry::mass_properties(before).volume);
+  EXPECT_TRUE(studio().document()->modified());
+  ASSERT_TRUE(studio().undo());  // one edit
+  EXPECT_EQ(scene().parts[part("backrest")].mesh.V, before.V);
+  ASSERT_TRUE(frontend_->run_until_collisions_current(milliseconds(60000)));
+  EXPECT_EQ(intervals_shown(), 2u);
+}
+
+TEST_F(StudioShaping, ACancelledCarveChangesNothing) {
+  studio().select_part(part("backrest"));
+  const std::uint64_t version = studio().document()->version();
+  ShapingPanel::CarveSettings settings;
+  settings.carvers = {"armrest_left", "armrest_right"};
+  settings.grid = 0.002;  // fine: long enough to be cancelled while it runs
+  ASSERT_TRUE(studio().shaping().start_carve(studio(), settings)) << studio().status();
+  EXPECT_TRUE(studio().shaping().carving());
+  EXPECT_FALSE(studio().shaping().start_carve(studio(), settings));  // one at a time
+  frontend_->run_frame();  // the progress window with its Cancel button
+  studio().shaping().cancel_carve(studio());
+  EXPECT_FALSE(studio().shaping().carving());
+  for (int i = 0; i < 3; ++i) frontend_->run_frame();
+  EXPECT_EQ(studio().document()->version(), version);
+  EXPECT_NE(studio().status().find("cancelled"), std::string::npos) << studio().status();
+}
+
+TEST_F(StudioShaping, BadCarveRequestsAreRefusedWithAReason) {
+  studio().select_part(part("backrest"));
+  ShapingPanel::CarveSettings settings;
+  EXPECT_FALSE(studio().shaping().start_carve(studio(), settings));  // no carvers
+  settings.carvers = {"no_such_part"};
+  EXPECT_FALSE(studio().shaping().start_carve(studio(), settings));
+  EXPECT_NE(studio().status().find("no_such_part"), std::string::npos) << studio().status();
+  settings.carvers = {"backrest"};
+  EXPECT_FALSE(studio().shaping().start_carve(studio(), settings));
+  EXPECT_NE(studio().status().find("itself"), std::string::npos) << studio().status();
+  EXPECT_THROW(run_script(*frontend_, "carve backrest armrest_left\n", "bad.script"), ScriptError);
+  EXPECT_FALSE(studio().document()->modified());
+}
+
+TEST_F(StudioShaping, TheCarveWindowPresetsTheCollidingParts) {
+  studio().select_part(part("backrest"));
+  studio().shaping().show_carve_window(studio());
+  frontend_->run_frame();
+  const auto& window = studio().shaping().carve_window();
+  ASSERT_TRUE(window);
+  std::vector<std::string> carvers = window->carvers;
+  std::sort(carvers.begin(), carvers.end());
+  EXPECT_EQ(carvers, (std::vector<std::string>{"armrest_left", "armrest_right"}));
+  studio().select_part(-1);  // nothing to carve: the window closes
+  frontend_->run_frame();
+  EXPECT_FALSE(studio().shaping().carve_window());
+}
+
+TEST_F(StudioShaping, TheEnvelopeCoversThePartThroughoutTheTransitionAndFollowsEdits) {
+  const int moving = part("backrest");  // it turns over in unfold
+  studio().select_part(moving);
+  run_script(*frontend_, "expect-envelope none\nenvelope on\nexpect-envelope\n", "envelope.script");
+  const auto envelope = studio().shaping().envelope(studio());
+  ASSERT_TRUE(envelope);
+  Eigen::AlignedBox3d box = geometry::bounding_box(envelope->V);
+  box.min().array() -= 1e-6;
+  box.max().array() += 1e-6;
+  for (double t = 0; t <= 1.0; t += 0.125) {
+    const Eigen::MatrixX3d V = scene().posed_vertices(unfold_, moving, t);
+    for (int v = 0; v < V.rows(); ++v) ASSERT_TRUE(box.contains(V.row(v).transpose())) << "t = " << t << ", vertex " << v;
+  }
+  // The part moves: its envelope reaches beyond where it is at any one time.
+  const Eigen::AlignedBox3d start = geometry::bounding_box(scene().posed_vertices(unfold_, moving, 0.0));
+  EXPECT_GT(box.volume(), 1.5 * start.volume());
+  // An edit of the design gives a new envelope; off hides it.
+  run_script(*frontend_, "sculpt armrest_left sphere 0.05 0.05 0.05 0.05 0 -0.25 0 translate 0 0.02 0\n", "edit.script");
+  studio().select_part(moving);
+  EXPECT_NE(studio().shaping().envelope(studio()), envelope);
+  run_script(*frontend_, "envelope off\nexpect-envelope none\n", "off.script");
+}
+
+}  // namespace
+}  // namespace reconfig::studio
