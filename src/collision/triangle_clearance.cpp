@@ -102,9 +102,9 @@ class ClearanceSearch {
     const TriangleCorners a = corners_at(r_.a_start, r_.a_end, mid), b = corners_at(r_.b_start, r_.b_end, mid);
     const NearestPair near = nearest_pair(a, b);
     const double drift = lipschitz_ * half;
-    if (near.distance + drift < r_.clearance - r_.rounding) return report(lo, hi);  // closer throughout
+    if (near.distance + drift < r_.clearance - r_.rounding) return add_piece(lo, hi);  // closer throughout
     if (near.distance - drift >= r_.clearance + r_.rounding || apart_throughout(a, b, near, lo, hi)) return;
-    if (hi - lo <= r_.time_tolerance) return report(lo, hi);
+    if (hi - lo <= r_.time_tolerance) return add_piece(lo, hi);
     search_piece(lo, mid);
     search_piece(mid, hi);
   }
@@ -112,7 +112,7 @@ class ClearanceSearch {
   TriangleClearanceResult result() && { return std::move(result_); }
 
  private:
-  void report(double lo, double hi) { result_.intervals.push_back({lo, hi}); }
+  void add_piece(double lo, double hi) { result_.intervals.push_back({lo, hi}); }
 
   /// Whether some direction — from a's nearest point to b's, or either normal — keeps the
   /// triangles at least C apart at both ends of [lo, hi] (then throughout: the gap is concave).
