@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <tbb/global_control.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -38,6 +39,7 @@ struct CheckOptions {
   double box_resolution = collision::DetectorOptions{}.box_resolution;
   double contact = 0;
   bool touching_collides = false;
+  double clearance = 0;
   scene::CollisionSettings given;  ///< which of them were given
   bool all_contacts = false;
   bool energy = false;
@@ -89,6 +91,7 @@ nlohmann::ordered_json to_json(const scene::Reconfigurable& scene, const CheckOu
                            {"parts", parts},
                            {"box_min", {lo.x(), lo.y(), lo.z()}},
                            {"box_max", {hi.x(), hi.y(), hi.z()}},
+                           {"kind", ci.clearance ? "clearance" : "collision"},
                            {"containment", ci.containment},
                            {"possible", ci.possible}});
       if (!outcome.energies.empty()) {
@@ -114,6 +117,7 @@ std::string box_text(const Eigen::AlignedBox3d& box) {
 
 std::string qualifiers(const collision::CollisionInterval& ci) {
   std::string text;
+  if (ci.clearance) text += " (clearance: closer than allowed, not colliding)";
   if (ci.containment) text += " (one inside the other)";
   if (ci.possible) text += " (possible: within the tolerance)";
   return text;
@@ -129,8 +133,13 @@ std::string text_report(const scene::Reconfigurable& scene, const CheckOutcome& 
       out += "collision-free\n";
       continue;
     }
-    out += fmt::format("{} collision interval{}\n", transition.intervals.size(),
-                       transition.intervals.size() == 1 ? "" : "s");
+    const auto clearances = std::count_if(transition.intervals.begin(), transition.intervals.end(),
+                                          [](const collision::CollisionInterval& ci) { return ci.clearance; });
+    const auto collisions = static_cast<std::ptrdiff_t>(transition.intervals.size()) - clearances;
+    if (collisions > 0) out += fmt::format("{} collision interval{}", collisions, collisions == 1 ? "" : "s");
+    if (clearances > 0)
+      out += fmt::format("{}{} clearance interval{}", collisions > 0 ? ", " : "", clearances, clearances == 1 ? "" : "s");
+    out += "\n";
     for (const auto& ci : transition.intervals) {
       out += fmt::format("  t = {:.6f} – {:.6f}  {}{}  at {}\n", ci.t0, ci.t1, part_names(scene, ci), qualifiers(ci),
                          box_text(ci.box));
@@ -174,6 +183,9 @@ void write_file(const std::string& path, const std::string& text) {
   write_atomically(path, [&](std::ostream& out) { out << text; });
 }
 
+/// ", clearance C" when a clearance is checked.
+std::string clearance_text(double clearance) { return clearance > 0 ? fmt::format(", clearance {:g}", clearance) : ""; }
+
 CheckOutcome run_reference(const scene::Reconfigurable& scene, const CheckOptions& options,
                            const std::vector<int>& transitions, const ProgressCallback& progress) {
   collision::ReferenceCheckRequest request;
@@ -183,16 +195,18 @@ CheckOutcome run_reference(const scene::Reconfigurable& scene, const CheckOption
   const scene::CollisionSettings settings = scene.collision.overridden_by(options.given);
   request.contact = settings.contact.value_or(0);
   request.touching_collides = settings.touching_collides.value_or(false);
+  request.clearance = settings.clearance.value_or(0);
   const collision::ReferenceCheckResult result = collision::reference_check(scene, request);
   return {result.transitions,
-          fmt::format("reference check, {} samples per transition (ends within {:.3g}), contact tolerance {:g}{}",
+          fmt::format("reference check, {} samples per transition (ends within {:.3g}), contact tolerance {:g}{}{}",
                       options.samples, result.time_error, result.contact,
-                      request.touching_collides ? ", touching collides" : ""),
+                      request.touching_collides ? ", touching collides" : "", clearance_text(request.clearance)),
           {{"method", "reference"},
            {"samples", options.samples},
            {"time_error", result.time_error},
            {"contact", result.contact},
-           {"touching_collides", request.touching_collides}},
+           {"touching_collides", request.touching_collides},
+           {"clearance", request.clearance}},
           0};
 }
 
@@ -213,14 +227,15 @@ CheckOutcome run_engine(const scene::Reconfigurable& scene, const CheckOptions& 
   const int dop = collision::halfspace_count(used.dop);
   const double contact = collision::contact_tolerance(scene, used.contact);
   return {result.transitions,
-          fmt::format("spacetime engine, {}-DOP, tolerance {:g}, contact tolerance {:g}{}{}{}", dop, used.tolerance,
-                      contact, used.touching_collides ? ", touching collides" : "",
+          fmt::format("spacetime engine, {}-DOP, tolerance {:g}, contact tolerance {:g}{}{}{}{}", dop, used.tolerance,
+                      contact, used.touching_collides ? ", touching collides" : "", clearance_text(used.clearance),
                       used.conservative ? ", conservative" : "", options.all_contacts ? ", every contact" : ""),
           {{"method", "engine"},
            {"dop", dop},
            {"tolerance", used.tolerance},
            {"contact", contact},
            {"touching_collides", used.touching_collides},
+           {"clearance", used.clearance},
            {"time_error", used.conservative ? 0.0 : collision::kIntervalEndTolerance},
            {"conservative", used.conservative},
            {"all_contacts", options.all_contacts},
@@ -325,7 +340,7 @@ void add_check_command(CLI::App& app, int& exit_code) {
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   command->add_option("--dop", options->dop, "Spacetime k-DOP family of the engine's BVH (overrides the scene's)")
-      ->check(CLI::IsMember({8, 28, 80}))
+      ->check(CLI::IsMember(scene::kDopHalfspaces))
       ->capture_default_str();
   command->add_flag("--conservative,!--no-conservative", options->conservative,
                     "Engine: also report near misses the true motion may turn into collisions (never misses one); "
@@ -351,6 +366,10 @@ void add_check_command(CLI::App& app, int& exit_code) {
   command->add_flag("--touching-collides,!--no-touching-collides", options->touching_collides,
                     "Report parts that only touch (within the contact tolerance) as collisions too; overrides the "
                     "scene's");
+  command->add_option("--clearance", options->clearance,
+                      "Also report where two parts come closer than this distance without colliding, as clearance "
+                      "intervals (exit code 1 like collisions; 0: none; overrides the scene's)")
+      ->check(CLI::NonNegativeNumber);
   command->add_option("--threads", options->threads, "Worker threads (default: all cores)")->check(CLI::NonNegativeNumber);
   command->add_option("--samples", options->samples, "Time samples per transition (reference check)")
       ->check(CLI::Range(2, 10000000))
@@ -369,6 +388,7 @@ void add_check_command(CLI::App& app, int& exit_code) {
     if (command->count("--contact")) options->given.contact = options->contact;
     if (command->count("--touching-collides") || command->count("--no-touching-collides"))
       options->given.touching_collides = options->touching_collides;
+    if (command->count("--clearance")) options->given.clearance = options->clearance;
     exit_code = run_check(*options);
   });
 }

@@ -1,5 +1,5 @@
 // Collisions > Settings: how the collision service detects (tolerance, k-DOP family, box grid,
-// frame length, conservative mode, contact tolerance, touching), edited in a small window and applied to the open design.
+// frame length, conservative mode, contact tolerance, touching, clearance), edited in a small window and applied to the open design.
 
 #include <fmt/format.h>
 
@@ -10,22 +10,38 @@
 namespace reconfig::studio {
 namespace {
 
-constexpr collision::DopFamily kFamilies[] = {collision::DopFamily::k8, collision::DopFamily::k28, collision::DopFamily::k80};
-constexpr const char* kFamilyNames[] = {"8-DOP (boxes)", "28-DOP", "80-DOP"};
+constexpr const auto& kFamilies = collision::kDopFamilies;
 
 int family_index(collision::DopFamily family) {
-  for (int i = 0; i < 3; ++i)
-    if (kFamilies[i] == family) return i;
+  for (std::size_t i = 0; i < kFamilies.size(); ++i)
+    if (kFamilies[i] == family) return static_cast<int>(i);
   return 1;
 }
 
+/// "8-DOP (boxes)", "28-DOP", ...: the combo box's items.
+const std::vector<std::string>& family_names() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> all;
+    for (const collision::DopFamily family : kFamilies)
+      all.push_back(fmt::format("{}-DOP{}", collision::halfspace_count(family), family == collision::DopFamily::k8 ? " (boxes)" : ""));
+    return all;
+  }();
+  return names;
+}
+
+bool family_name(void* /*data*/, int index, const char** text) {
+  *text = family_names()[index].c_str();
+  return true;
+}
+
 std::string describe(const collision::DetectorOptions& options) {
-  return fmt::format("tolerance {:g}, {}-DOP, {}, frames of {:g}{}{}", options.tolerance,
+  return fmt::format("tolerance {:g}, {}-DOP, {}, frames of {:g}{}{}{}", options.tolerance,
                      collision::halfspace_count(options.dop),
                      options.box_resolution > 0 ? fmt::format("box grid {:g} %", 100 * options.box_resolution)
                                                 : std::string("exact boxes"),
                      options.frame, options.conservative ? ", conservative" : "",
-                     options.touching_collides ? ", touching collides" : "");
+                     options.touching_collides ? ", touching collides" : "",
+                     options.clearance > 0 ? fmt::format(", clearance {:g}", options.clearance) : std::string());
 }
 
 void hint(const char* text) {
@@ -71,7 +87,8 @@ void Studio::draw_collision_settings() {
          "Smaller: more time samples, slower detection.");
     int family = family_index(draft.dop);
     ImGui::SetNextItemWidth(160);
-    if (ImGui::Combo("Bounding volumes", &family, kFamilyNames, 3)) draft.dop = kFamilies[family];
+    if (ImGui::Combo("Bounding volumes", &family, family_name, nullptr, static_cast<int>(kFamilies.size())))
+      draft.dop = kFamilies[family];
     hint("The k-DOP family of the spacetime hierarchies: 28 is usually fastest.");
     double percent = 100 * draft.box_resolution;
     ImGui::SetNextItemWidth(160);
@@ -86,6 +103,11 @@ void Studio::draw_collision_settings() {
     ImGui::Checkbox("Touching collides", &draft.touching_collides);
     hint("Also report parts that only touch (surfaces within the contact tolerance, interiors not\n"
          "overlapping beyond it) as collisions: a drawer in its runner, a box on a table.");
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(120);
+    ImGui::InputDouble("Clearance (0: none)", &draft.clearance, 0, 0, "%.6g");
+    hint("Also report, in amber, where two parts come closer than this distance without colliding:\n"
+         "the manufacturing gaps a design needs.");
     ImGui::SetNextItemWidth(160);
     ImGui::InputDouble("Contact tolerance (0: default)", &draft.contact, 0, 0, "%.6g");
     hint("Parts that meet by no more than this distance only touch. 0: 1e-6 of the design's size.");

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -120,7 +121,10 @@ void Studio::draw_inspector() {
     ImGui::Separator();
     for (const auto& transition : snapshot->transitions) {
       if (transition.transition != active_transition_) continue;
-      ImGui::Text("%s%s", counted(transition.intervals.size(), "collision interval").c_str(),
+      const auto clearances = std::count_if(transition.intervals.begin(), transition.intervals.end(),
+                                            [](const collision::CollisionInterval& ci) { return ci.clearance; });
+      ImGui::Text("%s%s%s", counted(transition.intervals.size() - clearances, "collision interval").c_str(),
+                  clearances > 0 ? fmt::format(", {}", counted(clearances, "clearance interval")).c_str() : "",
                   transition.up_to_date ? "" : " (detecting...)");
       for (std::size_t i = 0; i < transition.intervals.size(); ++i) {
         const auto& interval = transition.intervals[i];
@@ -128,7 +132,10 @@ void Studio::draw_inspector() {
         for (const int p : interval.parts) parts.push_back(scene.parts[p].name);
         const std::string label = fmt::format(
             "{}##ci{}", interval_label(interval.t0, interval.t1, parts, ImGui::GetContentRegionAvail().x), i);
-        if (ImGui::Selectable(label.c_str(), interval.t0 <= time_ && time_ <= interval.t1)) {
+        if (interval.clearance) ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(200, 140, 0, 255));  // amber
+        const bool chosen = ImGui::Selectable(label.c_str(), interval.t0 <= time_ && time_ <= interval.t1);
+        if (interval.clearance) ImGui::PopStyleColor();
+        if (chosen) {
           playing_ = false;
           set_time(interval.t0);
         }

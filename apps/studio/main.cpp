@@ -111,7 +111,7 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--dop", options.dop,
                  "collision settings (of designs that save none): k-DOP family of the spacetime hierarchies")
-      ->check(CLI::IsMember({8, 28, 80}))
+      ->check(CLI::IsMember(scene::kDopHalfspaces))
       ->capture_default_str();
   app.add_option("--box-resolution", detector.box_resolution,
                  "collision settings (of designs that save none): grid of the collision boxes, a fraction of the "
@@ -127,7 +127,7 @@ int main(int argc, char** argv) {
     const int code = app.exit(error);
     return code == 0 ? 0 : 2;
   }
-  detector.dop = *collision::dop_family(options.dop);  // --dop is checked to be 8, 28 or 80
+  detector.dop = *collision::dop_family(options.dop);  // --dop is checked to be one of scene::kDopHalfspaces
   int width = 0, height = 0;
   char x = 0;
   std::istringstream size(options.size);

@@ -102,13 +102,13 @@ class Runner {
       } else if (key == "dop") {
         const double halfspaces = number(word, 0, "dop");
         const auto family = halfspaces == std::floor(halfspaces) ? collision::dop_family(static_cast<int>(halfspaces)) : std::nullopt;
-        if (!family) fail(fmt::format("dop must be 8, 28 or 80, not \"{}\"", value));
+        if (!family) fail(fmt::format("dop must be {}, not \"{}\"", scene::dop_halfspace_choices(), value));
         options.dop = *family;
       } else if (key == "conservative" && (value == "on" || value == "off")) {
         options.conservative = value == "on";
       } else {
-        fail(fmt::format("unknown collision setting \"{}\" (tolerance=, dop=8|28|80, box-resolution=, frame=, "
-                         "conservative=on|off)", setting));
+        fail(fmt::format("unknown collision setting \"{}\" (tolerance=, dop={}, box-resolution=, frame=, "
+                         "conservative=on|off)", setting, fmt::join(scene::kDopHalfspaces, "|")));
       }
     }
     return options;

@@ -137,8 +137,9 @@ void Studio::draw_timeline() {
                           IM_COL32(240, 150, 60, 70));
     const bool solid = current->up_to_date && snapshot->version == document_->version();
     for (const auto& interval : current->intervals) {
-      const ImU32 color = interval.possible ? IM_COL32(235, 160, 40, solid ? 230 : 110)
-                                            : IM_COL32(215, 40, 30, solid ? 230 : 110);
+      const ImU32 color = interval.clearance  ? IM_COL32(255, 191, 0, solid ? 230 : 110)  // amber
+                          : interval.possible ? IM_COL32(235, 160, 40, solid ? 230 : 110)
+                                              : IM_COL32(215, 40, 30, solid ? 230 : 110);
       draw->AddRectFilled({x_of(interval.t0), bands_y + 2},
                           {std::max(x_of(interval.t1), x_of(interval.t0) + 2), bands_y + kRowHeight - 2}, color, 3);
       bands.emplace_back(interval.t0, interval.t1);
@@ -161,7 +162,10 @@ void Studio::draw_timeline() {
         std::string parts;
         for (const int part : interval.parts) parts += (parts.empty() ? "" : " × ") + scene.parts[part].name;
         ImGui::SetTooltip("%s\nt = %.3f to %.3f%s\nP: show it in the picture-in-picture", parts.c_str(),
-                          interval.t0, interval.t1, interval.possible ? "\n(possible: near miss of the proxies)" : "");
+                          interval.t0, interval.t1,
+                          interval.clearance  ? "\n(clearance: closer than allowed, not colliding)"
+                          : interval.possible ? "\n(possible: near miss of the proxies)"
+                                              : "");
         if (ImGui::IsKeyPressed(keys::kP, false)) pip_.open_on(*this, active_transition_, interval);
       }
   pip_.draw_timeline_marker(draw, *this);

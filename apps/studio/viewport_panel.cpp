@@ -95,6 +95,7 @@ void Studio::render_viewport_image(int width, int height) {
   if (document_) {
     const scene::Reconfigurable& scene = document_->scene();
     render::SceneDrawRequest request;
+    std::vector<bool> clearance_boxes;  // per box of the request: a clearance interval's (amber)
     request.transition = active_transition_;
     request.time = time_;
     request.state = active_state_;
@@ -120,9 +121,14 @@ void Studio::render_viewport_image(int width, int height) {
         for (const auto& transition : snapshot->transitions)
           if (transition.transition == active_transition_)
             for (const auto& interval : transition.frames)
-              if (interval.t0 <= time_ + 1e-9 && time_ <= interval.t1 + 1e-9) request.boxes.push_back(interval.box);
+              if (interval.t0 <= time_ + 1e-9 && time_ <= interval.t1 + 1e-9) {
+                request.boxes.push_back(interval.box);
+                clearance_boxes.push_back(interval.clearance);
+              }
     }
     list = render::scene_draw_list(scene, request);
+    for (std::size_t i = 0; i < clearance_boxes.size() && i < list.boxes.size(); ++i)
+      if (clearance_boxes[i]) list.boxes[i].color = {1.0f, 0.75f, 0.0f};  // amber, as on the timeline
     list.seconds = seconds_;
     viewport_pulsing_ = !list.boxes.empty();
     // The selected part's path: where its pivot goes over the transition.

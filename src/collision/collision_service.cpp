@@ -127,8 +127,8 @@ void CollisionService::run() {
       TransitionSnapshot result;
       result.transition = t;
       result.name = scene->transitions[t].name;
-      result.intervals = consolidate(detectors[t].groups(), detectors[t].containments());
-      result.frames = consolidate(detectors[t].groups(), detectors[t].containments(), options_.detector.frame);
+      result.intervals = consolidate(detectors[t].intervals(), detectors[t].containments());
+      result.frames = consolidate(detectors[t].intervals(), detectors[t].containments(), options_.detector.frame);
       result.up_to_date = true;
       result.changes = diff_intervals(last_done[t].intervals, result.intervals);
       last_done[t] = result;

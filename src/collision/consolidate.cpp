@@ -10,7 +10,7 @@ namespace {
 /// Only intervals of the same pair of parts merge: each interval a designer sees names one pair
 /// (the paper's collision intervals are per pair), and counts of intervals are counts per pair.
 bool can_merge(const CollisionInterval& a, const CollisionInterval& b, double max_duration) {
-  return a.parts == b.parts && detail::intervals_meet(a, b) &&
+  return a.parts == b.parts && a.clearance == b.clearance && detail::intervals_meet(a, b) &&
          std::max(a.t1, b.t1) - std::min(a.t0, b.t0) <= max_duration;
 }
 

@@ -32,9 +32,9 @@ CollisionResult detect_collisions(const scene::Reconfigurable& scene, const Coll
       return result;
     }
     const std::string& name = scene.transitions[transitions[i]].name;
-    result.transitions.push_back({transitions[i], name, consolidate(detector.groups(), detector.containments())});
+    result.transitions.push_back({transitions[i], name, consolidate(detector.intervals(), detector.containments())});
     result.frames.push_back(
-        {transitions[i], name, consolidate(detector.groups(), detector.containments(), request.detector.frame)});
+        {transitions[i], name, consolidate(detector.intervals(), detector.containments(), request.detector.frame)});
     result.stats += detector.last_stats();
   }
   return result;

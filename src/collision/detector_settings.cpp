@@ -13,6 +13,7 @@ DetectorOptions with_settings(DetectorOptions base, const scene::CollisionSettin
   if (settings.conservative) base.conservative = *settings.conservative;
   if (settings.contact) base.contact = *settings.contact;
   if (settings.touching_collides) base.touching_collides = *settings.touching_collides;
+  if (settings.clearance) base.clearance = *settings.clearance;
   return base;
 }
 
@@ -23,7 +24,8 @@ scene::CollisionSettings settings_of(const DetectorOptions& options) {
           .frame = options.frame,
           .conservative = options.conservative,
           .contact = options.contact > 0 ? std::optional(options.contact) : std::nullopt,  // unset: the design's default
-          .touching_collides = options.touching_collides};
+          .touching_collides = options.touching_collides,
+          .clearance = options.clearance > 0 ? std::optional(options.clearance) : std::nullopt};
 }
 
 }  // namespace reconfig::collision

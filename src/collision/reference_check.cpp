@@ -7,9 +7,11 @@
 #include <atomic>
 #include <cassert>
 #include <map>
+#include <tuple>
 
 #include "collision/detail/deep_inside.h"
 #include "reconfig/collision/contact_tolerance.h"
+#include "reconfig/collision/triangle_clearance.h"
 #include "reconfig/collision/triangle_touching.h"
 #include "reconfig/geometry/triangle_bvh.h"
 #include "reconfig/geometry/triangle_intersection.h"
@@ -27,7 +29,30 @@ struct Semantics {
   double contact = 0;
   bool touching_collides = false;
   bool detect_containment = true;
+  double clearance = 0;
 };
+
+/// Whether two posed parts come closer than `clearance` anywhere: every pair of triangles whose
+/// boxes come that close, by their distance; `box` receives the boxes of those closer.
+bool closer_than(const TriangleBvh& a, const TriangleBvh& b, double clearance, Eigen::AlignedBox3d& box) {
+  bool closer = false;
+  for (int f = 0; f < static_cast<int>(a.faces().rows()); ++f) {
+    const TriangleCorners ta{corner(a, f, 0), corner(a, f, 1), corner(a, f, 2)};
+    Eigen::AlignedBox3d reach;
+    for (const Eigen::Vector3d& p : ta) reach.extend(p);
+    const Eigen::AlignedBox3d own = reach;
+    reach.min().array() -= clearance;
+    reach.max().array() += clearance;
+    b.for_each_overlapping(reach, [&](int g) {
+      const TriangleCorners tb{corner(b, g, 0), corner(b, g, 1), corner(b, g, 2)};
+      if (triangle_distance(ta, tb) >= clearance) return;
+      closer = true;
+      box.extend(own);
+      for (const Eigen::Vector3d& p : tb) box.extend(p);
+    });
+  }
+  return closer;
+}
 
 /// Exact contacts between two posed parts at one instant: intersecting triangle pairs that
 /// interfere beyond δ (or every one, when touching collides).
@@ -62,7 +87,10 @@ std::vector<SampleContact> check_sample(const scene::Reconfigurable& scene, int 
   std::vector<SampleContact> contacts;
   for (int a = 0; a < n; ++a) {
     for (int b = a + 1; b < n; ++b) {
-      if (!posed[a].bounds().intersects(posed[b].bounds())) continue;
+      Eigen::AlignedBox3d reach = posed[a].bounds();
+      reach.min().array() -= semantics.clearance;
+      reach.max().array() += semantics.clearance;
+      if (!reach.intersects(posed[b].bounds())) continue;
       SampleContact contact{sample, a, b, {}, false, 0};
       collide_pair(posed[a], posed[b], semantics, contact);
       if (contact.triangle_pairs == 0 && semantics.detect_containment) {
@@ -74,24 +102,28 @@ std::vector<SampleContact> check_sample(const scene::Reconfigurable& scene, int 
           contact.box = posed[b].bounds();
         }
       }
-      if (contact.triangle_pairs > 0 || contact.containment) contacts.push_back(contact);
+      if (contact.triangle_pairs == 0 && !contact.containment && semantics.clearance > 0)
+        contact.clearance = closer_than(posed[a], posed[b], semantics.clearance, contact.box);
+      if (contact.triangle_pairs > 0 || contact.containment || contact.clearance) contacts.push_back(contact);
     }
   }
   return contacts;
 }
 
-/// Merges consecutive colliding samples of the same pair of parts into intervals.
+/// Merges consecutive colliding samples of the same pair of parts into intervals (and
+/// consecutive clearance samples into clearance intervals).
 std::vector<CollisionInterval> merge_samples(const std::vector<SampleContact>& contacts, int samples) {
-  std::map<std::pair<int, int>, std::vector<const SampleContact*>> by_pair;
-  for (const SampleContact& c : contacts) by_pair[{c.part_a, c.part_b}].push_back(&c);
+  std::map<std::tuple<int, int, bool>, std::vector<const SampleContact*>> by_pair;
+  for (const SampleContact& c : contacts) by_pair[{c.part_a, c.part_b, c.clearance}].push_back(&c);
   std::vector<CollisionInterval> intervals;
-  for (const auto& [pair, list] : by_pair) {
+  for (const auto& [key, list] : by_pair) {
+    const auto [part_a, part_b, clearance] = key;
     CollisionInterval current;
     int last = -2;
     for (const SampleContact* c : list) {  // ascending sample order
       if (c->sample != last + 1) {
         if (last >= 0) intervals.push_back(current);
-        current = CollisionInterval{sample_time(c->sample, samples), 0, {pair.first, pair.second}, {}, false, false, {}};
+        current = CollisionInterval{sample_time(c->sample, samples), 0, {part_a, part_b}, {}, false, false, {}, clearance};
       }
       current.t1 = sample_time(c->sample, samples);
       current.box.extend(c->box);
@@ -123,7 +155,7 @@ ReferenceCheckResult reference_check(const scene::Reconfigurable& scene, const R
   result.samples = request.samples;
   result.time_error = 1.0 / (request.samples - 1);
   const Semantics semantics{contact_tolerance(scene, request.contact), request.touching_collides,
-                            request.detect_containment};
+                            request.detect_containment, request.clearance};
   result.contact = semantics.contact;
   const double total = static_cast<double>(transitions.size()) * request.samples;
   std::atomic<long> done{0};

@@ -70,7 +70,84 @@ BodyTrees build_body_trees(const scene::Reconfigurable& scene) {
 }
 
 SpacetimeDetector::SpacetimeDetector(int transition, DetectorOptions options)
-    : transition_(transition), options_(options) {}
+    : transition_(transition), options_(options) {
+  if (options_.clearance > 0 && options_.closer_than == 0) {
+    DetectorOptions closer = options_;
+    closer.closer_than = options_.clearance;
+    closer.clearance = 0;
+    closer.detect_containment = false;  // nesting is interference, found by the collision traversal
+    closer_ = std::make_unique<SpacetimeDetector>(transition, closer);
+  }
+}
+
+namespace {
+
+/// The callbacks of one of two passes: progress over [from, from + 0.5] when `halved`.
+DetectCallbacks pass_callbacks(const DetectCallbacks& callbacks, bool halved, double from) {
+  if (!halved) return callbacks;
+  DetectCallbacks pass;
+  if (callbacks.progress) pass.progress = [&callbacks, from](double f) { return callbacks.progress(from + 0.5 * f); };
+  if (from == 0) pass.preview = callbacks.preview;  // the previews show where collisions may be found
+  return pass;
+}
+
+/// The clearance intervals: the groups of the clearance traversal less the times the same
+/// pair of parts collides (its groups and containments), flagged `clearance`.
+std::vector<CollisionInterval> clearance_intervals(const std::vector<CollisionInterval>& near,
+                                                   const std::vector<CollisionInterval>& groups,
+                                                   const std::vector<Containment>& containments) {
+  std::map<std::pair<int, int>, std::vector<std::pair<double, double>>> colliding;
+  for (const CollisionInterval& g : groups) colliding[{g.parts[0], g.parts[1]}].push_back({g.t0, g.t1});
+  for (const Containment& c : containments)
+    colliding[{std::min(c.inner, c.outer), std::max(c.inner, c.outer)}].push_back({c.t0, c.t1});
+  for (auto& [pair, ranges] : colliding) ranges = detail::union_of(std::move(ranges));
+  std::vector<CollisionInterval> clearances;
+  for (const CollisionInterval& g : near) {
+    CollisionInterval left = g;
+    left.clearance = true;
+    left.possible = false;
+    const auto at = colliding.find({g.parts[0], g.parts[1]});
+    if (at != colliding.end())
+      for (const auto& [t0, t1] : at->second) {
+        if (t1 < left.t0 || t0 > left.t1) continue;
+        if (t0 > left.t0) {  // the part before the collision
+          CollisionInterval before = left;
+          before.t1 = t0;
+          clearances.push_back(before);
+        }
+        left.t0 = t1;
+        if (left.t0 >= left.t1) break;
+      }
+    if (left.t0 < left.t1 || (left.t0 == left.t1 && g.t0 == g.t1)) clearances.push_back(left);
+  }
+  std::sort(clearances.begin(), clearances.end(), [](const CollisionInterval& x, const CollisionInterval& y) {
+    return std::tie(x.t0, x.parts, x.t1) < std::tie(y.t0, y.parts, y.t1);
+  });
+  return clearances;
+}
+
+}  // namespace
+
+std::vector<CollisionInterval> SpacetimeDetector::intervals() const {
+  std::vector<CollisionInterval> all = groups_;
+  all.insert(all.end(), clearances_.begin(), clearances_.end());
+  return all;
+}
+
+bool SpacetimeDetector::check_clearance(const scene::Reconfigurable& scene, const BodyTrees& trees,
+                                        const scene::DirtySet* dirty, const DetectCallbacks& callbacks) {
+  if (!closer_) return true;
+  const DetectCallbacks pass = pass_callbacks(callbacks, true, 0.5);
+  if (!(dirty ? closer_->update(scene, trees, *dirty, pass) : closer_->detect(scene, trees, pass))) {
+    valid_ = false;
+    return false;
+  }
+  clearances_ = clearance_intervals(closer_->groups(), groups_, containments_);
+  DetectionStats near = closer_->last_stats();
+  near.proxy_samples = 0;  // the same proxies
+  stats_ += near;
+  return true;
+}
 
 bool SpacetimeDetector::detect(const scene::Reconfigurable& scene, const BodyTrees& trees,
                                const DetectCallbacks& callbacks) {
@@ -86,9 +163,9 @@ bool SpacetimeDetector::detect(const scene::Reconfigurable& scene, const BodyTre
   std::vector<PairRange> work;  // the pairs that may meet: memory linear in them, not in n²
   for (const detail::TraversalRange& r : detail::candidate_pairs(trees, proxies_, scene, options_))
     work.push_back({r.a, r.b, r.t0, r.t1});
-  if (!traverse(scene, trees, work, {}, callbacks)) return false;
+  if (!traverse(scene, trees, work, {}, pass_callbacks(callbacks, closer_ != nullptr, 0))) return false;
   valid_ = true;
-  return true;
+  return check_clearance(scene, trees, nullptr, callbacks);
 }
 
 bool SpacetimeDetector::update(const scene::Reconfigurable& scene, const BodyTrees& trees,
@@ -108,7 +185,7 @@ bool SpacetimeDetector::update(const scene::Reconfigurable& scene, const BodyTre
     if (const auto range = changed_range(proxies_[part], fresh)) changed[part].push_back(*range);
     proxies_[part] = std::move(fresh);
   }
-  if (changed.empty()) return true;
+  if (changed.empty()) return check_clearance(scene, trees, &dirty, callbacks);
   std::map<std::pair<int, int>, std::vector<std::pair<double, double>>> pair_ranges;
   const int n = static_cast<int>(scene.parts.size());
   for (const auto& [part, ranges] : changed)
@@ -134,7 +211,8 @@ bool SpacetimeDetector::update(const scene::Reconfigurable& scene, const BodyTre
   std::erase_if(containments_, [&](const Containment& c) {
     return pairs.count({std::min(c.inner, c.outer), std::max(c.inner, c.outer)}) > 0;
   });
-  return traverse(scene, trees, work, previous, callbacks);
+  if (!traverse(scene, trees, work, previous, pass_callbacks(callbacks, closer_ != nullptr, 0))) return false;
+  return check_clearance(scene, trees, &dirty, callbacks);
 }
 
 bool SpacetimeDetector::traverse(const scene::Reconfigurable& scene, const BodyTrees& trees, const std::vector<PairRange>& work,

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <map>
@@ -270,12 +271,15 @@ Transition read_transition(const JsonCursor& c, const fs::path& base_dir) {
 }
 
 CollisionSettings read_collision_settings(const JsonCursor& c) {
-  c.expect_object({"tolerance", "dop", "box_resolution", "frame", "conservative", "contact", "touching_collides"});
+  c.expect_object(
+      {"tolerance", "dop", "box_resolution", "frame", "conservative", "contact", "touching_collides", "clearance"});
   CollisionSettings settings;
   if (c.has("tolerance")) settings.tolerance = c["tolerance"].as_number();
   if (c.has("dop")) {
     const nlohmann::json& dop = c["dop"].value();  // compared as a number, so 2^32 + 28 is no 28
-    if (!dop.is_number_integer() || (dop != 8 && dop != 28 && dop != 80)) c["dop"].fail("expected 8, 28 or 80");
+    const auto listed = [&](int halfspaces) { return dop == halfspaces; };
+    if (!dop.is_number_integer() || std::none_of(kDopHalfspaces.begin(), kDopHalfspaces.end(), listed))
+      c["dop"].fail("expected " + dop_halfspace_choices());
     settings.dop = dop.get<int>();
   }
   if (c.has("box_resolution")) settings.box_resolution = c["box_resolution"].as_number();
@@ -283,6 +287,7 @@ CollisionSettings read_collision_settings(const JsonCursor& c) {
   if (c.has("conservative")) settings.conservative = c["conservative"].as_bool();
   if (c.has("contact")) settings.contact = c["contact"].as_number();
   if (c.has("touching_collides")) settings.touching_collides = c["touching_collides"].as_bool();
+  if (c.has("clearance")) settings.clearance = c["clearance"].as_number();
   // Each setting on its own, so that the error names the one at fault.
   const auto check = [&](const char* key, auto CollisionSettings::*setting) {
     CollisionSettings only;
@@ -293,6 +298,7 @@ CollisionSettings read_collision_settings(const JsonCursor& c) {
   check("box_resolution", &CollisionSettings::box_resolution);
   check("frame", &CollisionSettings::frame);
   check("contact", &CollisionSettings::contact);
+  check("clearance", &CollisionSettings::clearance);
   return settings;
 }
 
@@ -345,6 +351,7 @@ ordered_json collision_settings_json(const CollisionSettings& settings) {
   if (settings.conservative) j["conservative"] = *settings.conservative;
   if (settings.contact) j["contact"] = *settings.contact;
   if (settings.touching_collides) j["touching_collides"] = *settings.touching_collides;
+  if (settings.clearance) j["clearance"] = *settings.clearance;
   return j;
 }
 

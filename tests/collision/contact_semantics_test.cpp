@@ -2,8 +2,6 @@
 
 #include <gtest/gtest.h>
 
-#include <filesystem>
-#include <nlohmann/json.hpp>
 #include <random>
 
 #include "reconfig/collision/consolidate.h"
@@ -11,45 +9,12 @@
 #include "reconfig/collision/reference_check.h"
 #include "reconfig/collision/spacetime_detector.h"
 #include "reconfig/collision/triangle_touching.h"
-#include "reconfig/scene/scene_file.h"
+#include "box_scenes.h"
 
 namespace reconfig::collision {
 namespace {
 
-using nlohmann::json;
-
-json vec(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
-json quat(const Eigen::Quaterniond& q) { return {q.w(), q.x(), q.y(), q.z()}; }
-
-/// A straight, constant-speed Bézier track from a to b (handles at thirds).
-json linear_track(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
-  return {{"translation",
-           {{{"time", 0}, {"point", vec(a)}, {"in", vec(a)}, {"out", vec(a + (b - a) / 3)}},
-            {{"time", 1}, {"point", vec(b)}, {"in", vec(b - (b - a) / 3)}, {"out", vec(b)}}}}};
-}
-
-/// Unit boxes: "mover" slides from `from` to `to`, the others hold still at `fixed`; every
-/// position and orientation is turned by `turn` (about the origin).
-scene::Reconfigurable boxes(const Eigen::Vector3d& from, const Eigen::Vector3d& to,
-                            const std::vector<Eigen::Vector3d>& fixed, const Eigen::Quaterniond& turn = {1, 0, 0, 0},
-                            double mover_size = 1) {
-  json parts = {{{"name", "mover"}, {"box", {{"size", {mover_size, mover_size, mover_size}}}}}};
-  json start = {{"mover", {{"translation", vec(turn * from)}, {"rotation", quat(turn)}}}};
-  json end = {{"mover", {{"translation", vec(turn * to)}, {"rotation", quat(turn)}}}};
-  for (std::size_t i = 0; i < fixed.size(); ++i) {
-    const std::string name = std::string("fixed").append(std::to_string(i));
-    parts.push_back({{"name", name}, {"box", {{"size", {1, 1, 1}}}}});
-    start[name] = end[name] = {{"translation", vec(turn * fixed[i])}, {"rotation", quat(turn)}};
-  }
-  const json document = {
-      {"format", "reconfig-scene"},
-      {"version", 1},
-      {"parts", parts},
-      {"states", {{{"name", "start"}, {"poses", start}}, {{"name", "end"}, {"poses", end}}}},
-      {"transitions",
-       {{{"name", "slide"}, {"from", "start"}, {"to", "end"}, {"tracks", {{"mover", linear_track(turn * from, turn * to)}}}}}}};
-  return scene::parse_scene(document.dump(), std::filesystem::current_path(), "test.json");
-}
+using test::boxes;
 
 std::vector<CollisionInterval> engine(const scene::Reconfigurable& scene, DetectorOptions options = {}) {
   SpacetimeDetector detector(0, options);

@@ -46,7 +46,8 @@ json valid_scene() {
 /// `document` with collision settings of its own.
 json with_collision_settings(json document) {
   document["collision"] = {
-      {"tolerance", 0.0005}, {"dop", 80}, {"box_resolution", 0}, {"frame", 0.04}, {"conservative", true}};
+      {"tolerance", 0.0005}, {"dop", 80}, {"box_resolution", 0}, {"frame", 0.04}, {"conservative", true},
+      {"clearance", 0.002}};
   return document;
 }
 
@@ -94,7 +95,7 @@ TEST(SceneFile, RoundTripIsLossless) {
 TEST(SceneFile, CollisionSettingsRoundTrip) {
   const Reconfigurable scene = parse(with_collision_settings(valid_scene()));
   const CollisionSettings expected{
-      .tolerance = 0.0005, .dop = 80, .box_resolution = 0.0, .frame = 0.04, .conservative = true};
+      .tolerance = 0.0005, .dop = 80, .box_resolution = 0.0, .frame = 0.04, .conservative = true, .clearance = 0.002};
   EXPECT_EQ(scene.collision, expected);
   const Reconfigurable again = parse_scene(scene_to_json(scene, fs::current_path()), fs::current_path(), "again.json");
   EXPECT_EQ(again.collision, expected);
@@ -246,6 +247,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"empty frame", [](json& d) { d["collision"] = {{"frame", 0}}; }, "collision.frame", "a frame must last"},
         BadInput{"conservative as a number", [](json& d) { d["collision"] = {{"conservative", 1}}; },
                  "collision.conservative", "expected"},
+        BadInput{"negative clearance", [](json& d) { d["collision"] = {{"clearance", -0.001}}; }, "collision.clearance",
+                 "the clearance must be a distance"},
         BadInput{"view with zero distance",
                  [](json& d) {
                    d["view"] = {{"target", {0, 0, 0}}, {"distance", 0}, {"yaw_degrees", 0}, {"pitch_degrees", 0}};

@@ -26,6 +26,9 @@ struct CollisionInterval {
   /// found — every one with `DetectorOptions::all_contacts`, else the witnesses that fixed the
   /// interval's extent; empty for the reference check and for pure containment.
   std::vector<std::array<int, 4>> triangles;
+  /// A clearance interval (`DetectorOptions::clearance`, `check --clearance`): the parts come
+  /// closer than the clearance but do not collide (parts that only touch come closer).
+  bool clearance = false;
 
   double duration() const { return t1 - t0; }
 };

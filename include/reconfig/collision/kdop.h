@@ -8,6 +8,8 @@
 #include <optional>
 #include <utility>
 
+#include "reconfig/scene/collision_settings.h"
+
 namespace reconfig::collision {
 
 /// The families of axes a spacetime k-DOP can use.
@@ -25,12 +27,29 @@ constexpr int axis_count(DopFamily family) {
 /// The number of halfspaces of a family (8, 28 or 80: how `--dop` and the papers name it).
 constexpr int halfspace_count(DopFamily family) { return 2 * axis_count(family); }
 
+/// Every family, by their number of halfspaces: those of `scene::kDopHalfspaces`, the one list
+/// of the counts a scene file or `--dop` may name.
+inline constexpr std::array<DopFamily, 3> kDopFamilies = {DopFamily::k8, DopFamily::k28, DopFamily::k80};
+static_assert([] {
+  for (std::size_t i = 0; i < kDopFamilies.size(); ++i)
+    if (halfspace_count(kDopFamilies[i]) != scene::kDopHalfspaces[i]) return false;
+  return kDopFamilies.size() == scene::kDopHalfspaces.size();
+}());
+
 /// The family with `halfspaces` halfspaces (8, 28 or 80), or none for another number.
 constexpr std::optional<DopFamily> dop_family(int halfspaces) {
-  if (halfspaces == 8) return DopFamily::k8;
-  if (halfspaces == 28) return DopFamily::k28;
-  if (halfspaces == 80) return DopFamily::k80;
+  for (const DopFamily family : kDopFamilies)
+    if (halfspace_count(family) == halfspaces) return family;
   return std::nullopt;
+}
+
+/// Calls `f.template operator()<family>()` with `family` known at compile time, and returns
+/// what it returns: the one place a family chosen at run time becomes a template argument.
+template <class F>
+decltype(auto) with_dop_family(DopFamily family, F&& f) {
+  if (family == DopFamily::k8) return f.template operator()<DopFamily::k8>();
+  if (family == DopFamily::k28) return f.template operator()<DopFamily::k28>();
+  return f.template operator()<DopFamily::k80>();
 }
 
 /// The axes of a family as 4D directions with components in {−1, 0, 1}: the unit axes of the

@@ -23,6 +23,9 @@ struct ReferenceCheckRequest {
   double contact = 0;
   /// ...unless touching collides.
   bool touching_collides = false;
+  /// Also report, as clearance intervals, the samples where two parts that do not collide come
+  /// closer than this (some triangle pair's distance, `triangle_distance`; 0: no clearance check).
+  double clearance = 0;
   ProgressCallback progress;  ///< fraction of samples done over all transitions
 };
 
@@ -33,6 +36,8 @@ struct SampleContact {
   Eigen::AlignedBox3d box;      ///< box of the intersection at that instant
   bool containment = false;
   int triangle_pairs = 0;       ///< number of intersecting triangle pairs (0 for containment)
+  /// Not colliding, but closer than the clearance (`box`: that of the triangles that are).
+  bool clearance = false;
 };
 
 struct ReferenceCheckResult {
@@ -47,7 +52,7 @@ struct ReferenceCheckResult {
   double contact = 0;  ///< the contact tolerance δ used
   bool cancelled = false;
 
-  /// Whether any transition has a collision interval.
+  /// Whether any transition has a collision (or clearance) interval.
   bool any_collision() const;
 };
 

@@ -40,6 +40,14 @@ struct DetectorOptions {
   double contact = 0;
   /// Report touching (surfaces within δ, interiors not overlapping beyond it) as a collision too.
   bool touching_collides = false;
+  /// Also report where two parts come closer than this, in scene units, without interfering,
+  /// as clearance intervals (`SpacetimeDetector::clearances`; 0: no clearance check). A second
+  /// traversal finds them: bounds grown by half of it on each side, `triangles_closer_than` at
+  /// the leaves, ends refined like collision ends; the collision intervals are then taken out.
+  double clearance = 0;
+  /// Find where parts come closer than this distance instead of where they interfere (0:
+  /// interference). The clearance check's own traversal sets it; a caller sets `clearance`.
+  double closer_than = 0;
   double min_step = 1e-5;  ///< smallest proxy time step
   /// Length of a frame (`FrameGrid`): contacts are clipped to frames and merged into groups
   /// per pair of parts and frame, so every group spans one frame at most and the 3D view's
@@ -139,6 +147,12 @@ class SpacetimeDetector {
   /// one with `all_contacts`, else the witnesses the groups are made of.
   const std::vector<TriangleContact>& contacts() const { return contacts_; }
   const std::vector<Containment>& containments() const { return containments_; }
+  /// With `DetectorOptions::clearance`: per pair of parts and frame, the times the parts come
+  /// closer than the clearance without interfering (their groups' times less the collision
+  /// intervals and containments of the pair), flagged `clearance`, sorted like `groups`.
+  const std::vector<CollisionInterval>& clearances() const { return clearances_; }
+  /// The groups, then the clearances: every interval a designer is told of (to consolidate).
+  std::vector<CollisionInterval> intervals() const;
   const std::vector<PartProxy>& proxies() const { return proxies_; }
   const DetectionStats& last_stats() const { return stats_; }
 
@@ -151,6 +165,10 @@ class SpacetimeDetector {
   ///                  triangle pairs that made their groups' extents
   bool traverse(const scene::Reconfigurable& scene, const BodyTrees& trees, const std::vector<PairRange>& work,
                 const std::vector<TriangleContact>& previous, const DetectCallbacks& callbacks);
+  /// After `detect` or `update` of the collisions: the same for the clearance traversal, and
+  /// `clearances_` from both.
+  bool check_clearance(const scene::Reconfigurable& scene, const BodyTrees& trees, const scene::DirtySet* dirty,
+                       const DetectCallbacks& callbacks);
 
   int transition_;
   DetectorOptions options_;
@@ -159,6 +177,9 @@ class SpacetimeDetector {
   std::vector<CollisionInterval> groups_;
   std::vector<TriangleContact> contacts_;
   std::vector<Containment> containments_;
+  /// The clearance check's traversal (`closer_than` set), with `DetectorOptions::clearance`.
+  std::unique_ptr<SpacetimeDetector> closer_;
+  std::vector<CollisionInterval> clearances_;
   DetectionStats stats_;
 };
 

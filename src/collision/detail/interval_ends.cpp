@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "collision/detail/interval_merging.h"
+#include "collision/detail/moving_bounds.h"
 #include "collision/detail/spacetime_traversal.h"
 #include "reconfig/collision/consolidate.h"
 #include "reconfig/collision/contact_tolerance.h"
@@ -14,9 +15,6 @@ namespace {
 /// More re-detections than this per end and the end stays as found (a safeguard: each one
 /// narrows the window 32 times or moves past it).
 constexpr int kMaxRedetections = 64;
-
-/// The narrow phase's pieces per proxy step (`kNarrowPieces` of the traversal).
-constexpr double kNarrowPieces = 32;
 
 /// Re-detects one pair of parts over time windows, keeping the contacts that may belong to
 /// one interval (their boxes meet its box).

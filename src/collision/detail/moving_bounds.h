@@ -43,6 +43,10 @@ inline Eigen::AlignedBox3d triangle_box_at(const MovingTriangle& p0, const Movin
 /// spatial part matters.
 inline constexpr int kCullPieces = 8;
 
+/// The narrow phase refines a step down to this many equal pieces (dyadic: they nest within the
+/// `kCullPieces`), and reports a piece whole when a contact event lies in it.
+inline constexpr int kNarrowPieces = 32;
+
 template <DopFamily family>
 unsigned meeting_pieces(const MovingTriangle& a0, const MovingTriangle& a1, const MovingTriangle& b0,
                         const MovingTriangle& b1, double reach) {

@@ -3,6 +3,12 @@
 /// The traversal behind `SpacetimeDetector`: pairs of parts over time ranges, their 4D k-DOP
 /// hierarchies walked breadth first then depth first per proxy step, the narrow phase at the
 /// leaves, and the grouping of the contacts found per pair of parts and frame.
+///
+/// Its parts, each in its own header: pair timelines (`pair_timeline.h`), what every thread
+/// reads and the node bounds (`traversal_inputs.h`), the bound cache (`bound_cache.h`), work
+/// items and their protrusion (`work_item.h`), one item looked at (`work_item_expansion.h`),
+/// the leaf narrow phase (`leaf_narrow_phase.h`), contact hints (`contact_hints.h`) and the
+/// step scheduler (`step_scheduler.h`).
 
 #include <utility>
 #include <vector>

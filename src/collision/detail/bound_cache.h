@@ -1,0 +1,58 @@
+#pragma once
+/// @file
+/// The bound cache: the spacetime k-DOPs of the tree nodes one thread met last, so that the two
+/// children of a split work item, which share the node that was not split, bound it once.
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "collision/detail/traversal_inputs.h"
+
+namespace reconfig::collision::detail {
+
+/// The bounds of the nodes one thread met last, by (pair, side, node, sample range): the two
+/// children of a split item share the node that was not split, whose bound would otherwise be
+/// computed again. Direct-mapped per side: a newer bound of the same side may take its slot.
+template <DopFamily family>
+class BoundCache {
+ public:
+  using Dop = Kdop<family>;
+  struct Bound {
+    Dop dop;
+    std::array<Dop, 2> ends;  ///< at the range's ends (single steps only)
+  };
+
+  /// The node's bound over [s0, s1] (`TraversalInputs::node_bound`, with the ends for a single
+  /// step), valid until the next call for the same side.
+  const Bound& get(const TraversalInputs<family>& inputs, int pair, int side, int node, int s0, int s1) {
+    const Key key{pair, node, s0, s1};
+    Slot& slot = slots_[side][slot_of(key)];
+    if (!(slot.key == key)) {
+      slot.key = key;
+      slot.bound.dop = inputs.node_bound(pair, side, node, s0, s1, s1 - s0 == 1 ? &slot.bound.ends : nullptr);
+    }
+    return slot.bound;
+  }
+
+ private:
+  struct Key {
+    int pair = -1, node = 0, s0 = 0, s1 = 0;
+    bool operator==(const Key&) const = default;
+  };
+  struct Slot {
+    Key key;
+    Bound bound;
+  };
+  static constexpr int kSlotBits = 8;
+  static std::size_t slot_of(const Key& k) {
+    std::uint64_t h = static_cast<std::uint32_t>(k.node) * 0x9E3779B97F4A7C15ull;
+    h ^= (static_cast<std::uint64_t>(k.s0) << 32 | static_cast<std::uint32_t>(k.s1)) * 0xC2B2AE3D27D4EB4Full;
+    h ^= static_cast<std::uint64_t>(k.pair) * 0x165667B19E3779F9ull;
+    return static_cast<std::size_t>(h >> (64 - kSlotBits));
+  }
+  std::array<std::vector<Slot>, 2> slots_{std::vector<Slot>(std::size_t{1} << kSlotBits),
+                                          std::vector<Slot>(std::size_t{1} << kSlotBits)};
+};
+
+}  // namespace reconfig::collision::detail
