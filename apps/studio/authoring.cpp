@@ -71,6 +71,7 @@ geometry::MeshReport check_for_import(const geometry::Mesh& mesh) {
 }  // namespace
 
 bool Studio::new_design(const fs::path& file) {
+  if (refuse_while_linkage_unsaved(file)) return false;
   std::error_code error;
   if (file.empty()) {
     set_status("a new design needs the file it will be saved as", true);

@@ -14,18 +14,32 @@ namespace reconfig::studio {
 
 namespace fs = std::filesystem;
 
+namespace {
+
+/// The studio always shows the design in one of its states (or a transition between two):
+/// a design without states is refused with a message rather than opened.
+scene::Reconfigurable with_a_state(scene::Reconfigurable scene, const fs::path& file) {
+  if (scene.states.empty())
+    throw InputError(file.string(), "states",
+                     "the design has no states; the studio shows a design in one of its states "
+                     "(add one, e.g. \"states\": [{\"name\": \"rest\"}])");
+  return scene;
+}
+
+}  // namespace
+
 std::unique_ptr<Document> Document::open(const fs::path& file, collision::CollisionServiceOptions options,
                                          const scene::SceneLoadOptions& load) {
   // What a save or an autosave killed midway left behind (it would stay forever otherwise).
   remove_stale_temporary(file);
   remove_stale_temporary(autosave_path(fs::absolute(file)));
-  return std::make_unique<Document>(scene::load_scene(file, load), fs::absolute(file), options);
+  return std::make_unique<Document>(with_a_state(scene::load_scene(file, load), file), fs::absolute(file), options);
 }
 
 std::unique_ptr<Document> Document::recover(const fs::path& file, collision::CollisionServiceOptions options,
                                             const scene::SceneLoadOptions& load) {
   const fs::path autosave = autosave_path(fs::absolute(file));
-  scene::Reconfigurable scene = scene::load_scene(autosave, load);
+  scene::Reconfigurable scene = with_a_state(scene::load_scene(autosave, load), autosave);
   // Meshes the autosave kept for edited parts are still edits: the next save writes them
   // beside the design, and discarding the autosave may remove their folder.
   const fs::path meshes = fs::weakly_canonical(autosave_meshes_path(fs::absolute(file)));

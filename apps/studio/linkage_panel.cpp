@@ -119,8 +119,18 @@ bool LinkagePanel::open_file(Studio& studio, const std::filesystem::path& file) 
   return true;
 }
 
+void LinkagePanel::close_unless_unsaved(Studio& studio) {
+  if (lone_modified_ && !discard_armed_) {
+    discard_armed_ = true;
+    studio.set_status("the linkage has unsaved edits: Save them, or press Close again to discard them", true);
+    return;
+  }
+  close();
+}
+
 void LinkagePanel::close() {
   shown_ = false;
+  discard_armed_ = false;
   lone_file_.reset();
   joint_drag_.reset();
   curve_drag_.reset();
@@ -242,6 +252,7 @@ bool LinkagePanel::apply(Studio& studio, const LinkageEditOutcome& outcome, cons
     redo_.clear();
     load(outcome.result.linkage);
     lone_modified_ = true;
+    discard_armed_ = false;
   } else {
     const int t = transition(studio);
     if (t < 0) return false;
@@ -274,6 +285,7 @@ bool LinkagePanel::undo(Studio& studio) {
   load(undo_.back());
   undo_.pop_back();
   lone_modified_ = true;
+  discard_armed_ = false;
   studio.set_status("undid the linkage edit");
   return true;
 }
@@ -287,6 +299,7 @@ bool LinkagePanel::redo(Studio& studio) {
   load(redo_.back());
   redo_.pop_back();
   lone_modified_ = true;
+  discard_armed_ = false;
   studio.set_status("redid the linkage edit");
   return true;
 }
@@ -363,7 +376,7 @@ void LinkagePanel::draw_controls(Studio& studio) {
       if (label[0] == 'U') undo(studio);
       else if (label[0] == 'R') redo(studio);
       else if (label[0] == 'S') save(studio);
-      else close();
+      else close_unless_unsaved(studio);
     }
   }
   const std::string problem = editor_.motion_problem();

@@ -39,6 +39,9 @@ class LinkagePanel {
   void request_open_dialog();
   /// Hides the panel (a linkage opened alone is closed).
   void close();
+  /// The panel's Close button: a linkage opened alone with unsaved edits is closed only when
+  /// pressed a second time (the first says so in the status line).
+  void close_unless_unsaved(Studio& studio);
   /// A new design was opened: a linkage opened alone closes; the panel shows the first
   /// transition's drive if it has one.
   void document_opened(Studio& studio);
@@ -46,6 +49,8 @@ class LinkagePanel {
   bool shown() const { return shown_; }
   /// A linkage file is open alone (not a transition's drive).
   bool lone() const { return shown_ && lone_file_.has_value(); }
+  /// A linkage opened alone has edits not saved yet.
+  bool lone_modified() const { return lone() && lone_modified_; }
   /// The transition whose drive is shown, or −1 (none, or a linkage opened alone).
   int transition(const Studio& studio) const;
 
@@ -133,6 +138,7 @@ class LinkagePanel {
   double lone_angle_ = 0;
   bool lone_playing_ = false;
   bool lone_modified_ = false;
+  bool discard_armed_ = false;  ///< Close was pressed once on unsaved edits: the next one discards
   // The canvas: linkage point c is drawn at canvas_center_, `scale_` pixels per unit, y up.
   Eigen::Vector2d view_center_ = Eigen::Vector2d::Zero();
   double view_size_ = 1;  ///< linkage units the canvas's shorter side shows

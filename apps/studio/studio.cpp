@@ -30,6 +30,7 @@ collision::CollisionServiceOptions editor_collision_options() {
 Studio::Studio(StudioOptions options) : options_(std::move(options)), renderer_(render::RendererOptions{0}) {}
 
 bool Studio::open(const fs::path& file) {
+  if (refuse_while_linkage_unsaved(file)) return false;
   if (is_linkage_file(file)) return linkage_panel_.open_file(*this, file);
   try {
     document_ = Document::open(file, options_.collisions, options_.load);
@@ -135,8 +136,16 @@ std::string Studio::collision_summary() const {
                      counted(snapshot->transitions.size(), "transition"));
 }
 
+bool Studio::refuse_while_linkage_unsaved(const fs::path& file) {
+  if (!linkage_panel_.lone_modified()) return false;
+  set_status(fmt::format("{} not opened: the linkage open has unsaved edits; save it (Ctrl+S) or close it first",
+                         file.string()),
+             true);
+  return true;
+}
+
 void Studio::request_close() {
-  if (document_ && document_->modified()) confirm_close_ = true;
+  if ((document_ && document_->modified()) || linkage_panel_.lone_modified()) confirm_close_ = true;
   else quit_ = true;
 }
 
@@ -497,7 +506,8 @@ void Studio::draw_modals() {
   if (confirm_close_) ImGui::OpenPopup("Save changes?");
   confirm_close_ = false;
   if (ImGui::BeginPopupModal("Save changes?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-    ImGui::TextUnformatted("The design has unsaved changes.");
+    ImGui::TextUnformatted(linkage_panel_.lone_modified() ? "The linkage has unsaved changes."
+                                                          : "The design has unsaved changes.");
     if (ImGui::Button("Save")) {
       if (save()) quit_ = true;
       ImGui::CloseCurrentPopup();

@@ -124,6 +124,9 @@ class Studio {
   void frame(std::chrono::steady_clock::time_point now);
   /// True once the user chose File > Quit (or confirmed closing the window).
   bool quit_requested() const { return quit_; }
+  /// While a linkage opened alone has unsaved edits, opening `file` (or starting a new design
+  /// as it) is refused with a message. @return whether it was refused
+  bool refuse_while_linkage_unsaved(const std::filesystem::path& file);
   /// The window's close button: quits at once when nothing is unsaved, else asks.
   void request_close();
   /// Quits without saving (the question's Discard): the unsaved edits and their autosave go.
@@ -217,7 +220,7 @@ class Studio {
   /// time moves into the interval when it is outside. @return false when there is none
   bool jump_to_best_view();
   /// The camera (this viewport's field of view) that shows `interval` of `transition` best at
-  /// `time`, by occlusion queries (best_view_action.cpp).
+  /// `time`, by the occlusion counts of render/best_view.h (best_view_action.cpp).
   view::Camera best_view_camera(int transition, const collision::CollisionInterval& interval, double time);
   /// Draws the design at `time` of `transition` seen by `camera` into `target` (width × height),
   /// with `boxes`: the picture-in-picture's image.

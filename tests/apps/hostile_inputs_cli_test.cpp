@@ -93,7 +93,7 @@ TEST(HostileInputsCli, CtrlCStopsALongCheckCleanly) {
                     {"name": "back", "from": "b", "to": "a", "tracks": {"beam": {"rotation": [
       {"time": 0, "quaternion": [0.70710678118654757, 0, 0, 0.70710678118654757]}, {"time": 1, "quaternion": [1, 0, 0, 0]}]}}}]})";
   const fs::path err = scene.parent_path() / "err.txt";
-  const std::string command = "timeout --preserve-status -s INT 0.3 " + (testing::binary_dir() / "bin" / "reconfig").string() +
+  const std::string command = "timeout --preserve-status -s INT 0.8 " + (testing::binary_dir() / "bin" / "reconfig").string() +
                               " check " + scene.string() + " > /dev/null 2> " + err.string();
   const auto start = std::chrono::steady_clock::now();
   const int status = std::system(command.c_str());
@@ -103,7 +103,7 @@ TEST(HostileInputsCli, CtrlCStopsALongCheckCleanly) {
   ASSERT_TRUE(WIFEXITED(status)) << "killed by a signal, not stopped: " << message;
   EXPECT_EQ(WEXITSTATUS(status), 130) << message;
   EXPECT_NE(message.find("check cancelled (Ctrl+C): no result"), std::string::npos) << message;
-  EXPECT_LT(seconds, 2.0);
+  EXPECT_LT(seconds, 5.0);  // no hang after Ctrl+C
 }
 
 }  // namespace

@@ -180,6 +180,25 @@ TEST_F(LinkagePanelTest, ALinkageOpenedAloneIsEditedUndoneAndSaved) {
   EXPECT_EQ(linkage::read_linkage(saved).initial_positions(), edited.initial_positions());
 }
 
+TEST_F(LinkagePanelTest, UnsavedEditsOfALinkageOpenedAloneAreNeverDroppedSilently) {
+  ASSERT_TRUE(studio().open(examples_ / "linkages" / "jansen.json")) << studio().status();
+  script("linkage-drag-joint - U -6 4 keep=foot\n");
+  ASSERT_TRUE(studio().linkage_panel().lone_modified());
+  const auto edited = studio().linkage_panel().editor().linkage().initial_positions();
+  EXPECT_FALSE(studio().open(examples_ / "linkage-walker" / "scene.json"));
+  EXPECT_NE(studio().status().find("unsaved edits"), std::string::npos) << studio().status();
+  EXPECT_FALSE(studio().new_design(examples_ / "new.scene.json"));
+  EXPECT_EQ(studio().linkage_panel().editor().linkage().initial_positions(), edited);
+  studio().request_close();  // asks instead of quitting
+  frontend_->run_frame();
+  EXPECT_FALSE(studio().quit_requested());
+  studio().linkage_panel().close_unless_unsaved(studio());
+  EXPECT_TRUE(studio().linkage_panel().lone()) << "the first Close only warns";
+  studio().linkage_panel().close_unless_unsaved(studio());
+  EXPECT_FALSE(studio().linkage_panel().lone());
+  EXPECT_TRUE(studio().open(examples_ / "linkage-walker" / "scene.json")) << studio().status();
+}
+
 TEST_F(LinkagePanelTest, ATargetCurveDragBendsTheFootPathTowardIt) {
   ASSERT_TRUE(studio().open(examples_ / "linkages" / "jansen.json")) << studio().status();
   // The lowest sample of the foot curve lifted by 8 with a soft selection of radius 15.

@@ -273,6 +273,18 @@ TEST_F(StudioHeadless, ABadFileIsAMessageNotACrash) {
   frontend_->run_frame();
 }
 
+TEST_F(StudioHeadless, ADesignWithoutStatesIsRefusedWithAMessage) {
+  const std::filesystem::path stateless = scene_file_.parent_path() / "stateless.json";
+  std::ofstream(stateless) << R"({"format": "reconfig-scene", "version": 1,
+    "parts": [{"name": "cube", "box": {"size": [1, 1, 1]}}], "states": []})";
+  EXPECT_FALSE(studio().open(stateless));
+  EXPECT_NE(studio().status().find("stateless.json: states: the design has no states"), std::string::npos)
+      << studio().status();
+  ASSERT_NE(studio().document(), nullptr);
+  EXPECT_EQ(studio().document()->file(), std::filesystem::absolute(scene_file_));
+  frontend_->run_frame();
+}
+
 TEST_F(StudioHeadless, CollisionSettingsDetectAgainAndBadOnesAreRefused) {
   const int unfold = studio().document()->scene().find_transition("unfold");
   ASSERT_GE(unfold, 0);
