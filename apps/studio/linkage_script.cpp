@@ -16,12 +16,7 @@ namespace {
 
 double number(const std::vector<std::string>& args, std::size_t i, const char* what) {
   if (i >= args.size()) fail(fmt::format("missing {}", what));
-  try {
-    std::size_t used = 0;
-    const double value = std::stod(args[i], &used);
-    if (used == args[i].size() && std::isfinite(value)) return value;
-  } catch (const std::exception&) {
-  }
+  if (const std::optional<double> value = script_number(args[i])) return *value;
   fail(fmt::format("{} must be a number, not \"{}\"", what, args[i]));
 }
 

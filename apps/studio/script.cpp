@@ -14,6 +14,16 @@
 
 namespace reconfig::studio {
 
+std::optional<double> script_number(const std::string& text) {
+  try {
+    std::size_t used = 0;
+    const double value = std::stod(text, &used);
+    if (used == text.size() && std::isfinite(value)) return value;
+  } catch (const std::exception&) {
+  }
+  return std::nullopt;
+}
+
 ScriptError::ScriptError(const std::string& file, int line, const std::string& message)
     : std::runtime_error(fmt::format("{}:{}: {}", file, line, message)) {}
 
@@ -76,12 +86,7 @@ class Runner {
 
   double number(const std::vector<std::string>& args, std::size_t i, const char* what) const {
     if (i >= args.size()) fail(fmt::format("missing {}", what));
-    try {
-      std::size_t used = 0;
-      const double value = std::stod(args[i], &used);
-      if (used == args[i].size() && std::isfinite(value)) return value;
-    } catch (const std::exception&) {
-    }
+    if (const std::optional<double> value = script_number(args[i])) return *value;
     fail(fmt::format("{} must be a number, not \"{}\"", what, args[i]));
   }
 

@@ -7,6 +7,7 @@
 /// UI shows and stop the script with an error naming the line. docs/studio.md lists them all.
 
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -24,6 +25,9 @@ class ScriptError : public std::runtime_error {
 /// Runs frames with the mouse at each point in turn, the button held from the first to the
 /// last (a press, a drag through the points, a release).
 void drag_through(HeadlessFrontend& frontend, const std::vector<ImVec2>& points, int button = 0);
+
+/// The whole of `text` read as a finite number, or nothing (a script's numeric argument).
+std::optional<double> script_number(const std::string& text);
 
 /// Runs one of the linkage panel's actions (`linkage-…`, linkage_script.cpp).
 /// @throws std::runtime_error saying what failed
