@@ -13,6 +13,7 @@
 
 #include "axis_angle.h"
 #include "counted.h"
+#include "interval_kinds.h"
 #include "interval_label.h"
 #include "panel_window.h"
 #include "studio.h"
@@ -121,8 +122,7 @@ void Studio::draw_inspector() {
     ImGui::Separator();
     for (const auto& transition : snapshot->transitions) {
       if (transition.transition != active_transition_) continue;
-      const auto clearances = std::count_if(transition.intervals.begin(), transition.intervals.end(),
-                                            [](const collision::CollisionInterval& ci) { return ci.clearance; });
+      const std::size_t clearances = clearance_count(transition.intervals);
       ImGui::Text("%s%s%s", counted(transition.intervals.size() - clearances, "collision interval").c_str(),
                   clearances > 0 ? fmt::format(", {}", counted(clearances, "clearance interval")).c_str() : "",
                   transition.up_to_date ? "" : " (detecting...)");

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <map>
 
+#include "interval_kinds.h"
 #include "panel_window.h"
 #include "studio.h"
 
@@ -109,11 +110,16 @@ void Studio::draw_state_graph() {
       for (const auto& t : snapshot->transitions)
         if (t.transition == k) current = &t;
     const bool known = current && current->up_to_date && snapshot->version == document_->version();
-    const std::size_t count = current ? current->intervals.size() : 0;
-    const ImU32 fill = !known ? IM_COL32(170, 170, 175, 255)
-                              : count > 0 ? IM_COL32(215, 40, 30, 255) : IM_COL32(60, 160, 80, 255);
+    // Red with the number of collisions; amber with the number of clearance intervals when
+    // there are only those; green when free.
+    const std::size_t clearances = current ? clearance_count(current->intervals) : 0;
+    const std::size_t collisions = current ? current->intervals.size() - clearances : 0;
+    const ImU32 fill = !known          ? IM_COL32(170, 170, 175, 255)
+                       : collisions > 0 ? IM_COL32(215, 40, 30, 255)
+                       : clearances > 0 ? IM_COL32(230, 165, 0, 255)
+                                        : IM_COL32(60, 160, 80, 255);
     draw->AddCircleFilled(m, 11, fill);
-    const std::string text = known ? fmt::format("{}", count) : "...";
+    const std::string text = known ? fmt::format("{}", collisions > 0 ? collisions : clearances) : "...";
     const ImVec2 size = ImGui::CalcTextSize(text.c_str());
     draw->AddText({m.x - size.x / 2, m.y - size.y / 2}, IM_COL32(255, 255, 255, 255), text.c_str());
     const ImVec2 name_size = ImGui::CalcTextSize(transition.name.c_str()), at{m.x + 14, m.y - name_size.y / 2};

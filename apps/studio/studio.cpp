@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "counted.h"
+#include "interval_kinds.h"
 #include "keys.h"
 #include "panel_window.h"
 #include "reconfig/common/input_error.h"
@@ -130,9 +131,14 @@ std::string Studio::collision_summary() const {
     return fmt::format("collisions: detecting... {} of {} done", done,
                        counted(document_->scene().transitions.size(), "transition"));
   }
-  std::size_t count = 0;
-  for (const auto& transition : snapshot->transitions) count += transition.intervals.size();
-  return fmt::format("collisions: {} in {}, up to date", counted(count, "interval"),
+  std::size_t count = 0, clearances = 0;
+  for (const auto& transition : snapshot->transitions) {
+    count += transition.intervals.size();
+    clearances += clearance_count(transition.intervals);
+  }
+  const std::string clearance_text =
+      clearances > 0 ? fmt::format(" and {}", counted(clearances, "clearance interval")) : std::string();
+  return fmt::format("collisions: {}{} in {}, up to date", counted(count - clearances, "interval"), clearance_text,
                      counted(snapshot->transitions.size(), "transition"));
 }
 
