@@ -7,37 +7,14 @@
 #include <variant>
 
 #include "script.h"
-#include "studio_test_util.h"
+#include "bench_table_unfold.h"
 
 namespace reconfig::studio {
 namespace {
 
 using std::chrono::milliseconds;
 
-class StudioSculpt : public ::testing::Test {
- protected:
-  void SetUp() override {
-    StudioOptions options;
-    options.autosave_interval = milliseconds(0);
-    frontend_ = std::make_unique<HeadlessFrontend>(1000, 700, options);
-    ASSERT_TRUE(studio().open(bench_table_copy())) << studio().status();
-    unfold_ = studio().document()->scene().find_transition("unfold");
-    studio().open_transition(unfold_);
-    frontend_->run_frame();
-    ASSERT_TRUE(frontend_->run_until_collisions_current(milliseconds(60000)));
-  }
-
-  Studio& studio() { return frontend_->studio(); }
-
-  std::size_t intervals_shown() {
-    for (const auto& t : studio().collisions()->transitions)
-      if (t.transition == unfold_) return t.intervals.size();
-    return 0;
-  }
-
-  std::unique_ptr<HeadlessFrontend> frontend_;
-  int unfold_ = -1;
-};
+using StudioSculpt = BenchTableUnfold;
 
 TEST_F(StudioSculpt, PushingTheArmrestsBackFreesUnfoldAndUndoBringsTheCollisionsBack) {
   ASSERT_EQ(intervals_shown(), 2u);  // the backrest hits both armrests
