@@ -169,14 +169,7 @@ OcclusionCounter::OcclusionCounter(int resolution) : impl_(std::make_unique<Impl
   glBindTexture(GL_TEXTURE_BUFFER, 0);
   glBindBuffer(GL_TEXTURE_BUFFER, 0);
 
-  glGenVertexArrays(1, &c.occluder_vao);
-  glGenBuffers(1, &c.occluder_vbo);
-  glGenBuffers(1, &c.occluder_ebo);
-  glBindVertexArray(c.occluder_vao);
-  glBindBuffer(GL_ARRAY_BUFFER, c.occluder_vbo);
-  glEnableVertexAttribArray(0);
-  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), nullptr);
-  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, c.occluder_ebo);
+  detail::make_indexed_positions_vao(c.occluder_vao, c.occluder_vbo, c.occluder_ebo);
   glGenVertexArrays(1, &c.box_vao);
   glGenBuffers(1, &c.box_vbo);
   glBindVertexArray(c.box_vao);

@@ -18,6 +18,7 @@ namespace {
 
 using detail::check_gl;
 using detail::link_program;
+using detail::make_indexed_positions_vao;
 
 // Lit surfaces. Normals come from screen-space derivatives of the eye-space position: flat
 // shading without duplicating vertices, and always facing the viewer (two-sided).
@@ -149,14 +150,7 @@ Renderer::Renderer(const RendererOptions& options) : impl_(std::make_unique<Impl
   r.flat_program = link_program(kFlatVertex, kFlatFragment);
   r.flat_view_projection = glGetUniformLocation(r.flat_program, "view_projection");
 
-  glGenVertexArrays(1, &r.mesh_vao);
-  glGenBuffers(1, &r.mesh_vbo);
-  glGenBuffers(1, &r.mesh_ebo);
-  glBindVertexArray(r.mesh_vao);
-  glBindBuffer(GL_ARRAY_BUFFER, r.mesh_vbo);
-  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, r.mesh_ebo);
-  glEnableVertexAttribArray(0);
-  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), nullptr);
+  make_indexed_positions_vao(r.mesh_vao, r.mesh_vbo, r.mesh_ebo);
 
   glGenVertexArrays(1, &r.flat_vao);
   glGenBuffers(1, &r.flat_vbo);

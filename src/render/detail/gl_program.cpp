@@ -7,18 +7,25 @@
 namespace reconfig::render::detail {
 namespace {
 
+/// Throws with the driver's log, after deleting `object`, unless its `status` is set.
+template <typename GetStatus, typename GetLog, typename Delete>
+void require_status(GLuint object, GLenum status, GetStatus get_status, GetLog get_log, Delete destroy,
+                    const char* failure) {
+  GLint ok = 0;
+  get_status(object, status, &ok);
+  if (ok) return;
+  char log[2048];
+  get_log(object, sizeof log, nullptr, log);
+  destroy(object);
+  throw std::runtime_error(std::string("render: ") + failure + ": " + log);
+}
+
 GLuint compile(GLenum type, const char* source) {
   const GLuint shader = glCreateShader(type);
   glShaderSource(shader, 1, &source, nullptr);
   glCompileShader(shader);
-  GLint ok = 0;
-  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-  if (!ok) {
-    char log[2048];
-    glGetShaderInfoLog(shader, sizeof log, nullptr, log);
-    glDeleteShader(shader);
-    throw std::runtime_error(std::string("render: shader compilation failed: ") + log);
-  }
+  require_status(shader, GL_COMPILE_STATUS, glGetShaderiv, glGetShaderInfoLog, glDeleteShader,
+                 "shader compilation failed");
   return shader;
 }
 
@@ -32,15 +39,19 @@ GLuint link_program(const char* vertex, const char* fragment) {
   glLinkProgram(program);
   glDeleteShader(vs);
   glDeleteShader(fs);
-  GLint ok = 0;
-  glGetProgramiv(program, GL_LINK_STATUS, &ok);
-  if (!ok) {
-    char log[2048];
-    glGetProgramInfoLog(program, sizeof log, nullptr, log);
-    glDeleteProgram(program);
-    throw std::runtime_error(std::string("render: shader link failed: ") + log);
-  }
+  require_status(program, GL_LINK_STATUS, glGetProgramiv, glGetProgramInfoLog, glDeleteProgram, "shader link failed");
   return program;
+}
+
+void make_indexed_positions_vao(GLuint& vao, GLuint& vertex_buffer, GLuint& element_buffer) {
+  glGenVertexArrays(1, &vao);
+  glGenBuffers(1, &vertex_buffer);
+  glGenBuffers(1, &element_buffer);
+  glBindVertexArray(vao);
+  glBindBuffer(GL_ARRAY_BUFFER, vertex_buffer);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, element_buffer);
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), nullptr);
 }
 
 void check_gl(const char* during) {
