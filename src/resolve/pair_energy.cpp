@@ -9,6 +9,7 @@
 
 #include "reconfig/resolve/intersection_contour.h"
 #include "reconfig/resolve/penetration.h"
+#include "reconfig/resolve/proximity.h"
 
 namespace reconfig::resolve {
 namespace {
@@ -44,6 +45,15 @@ EnergySample sample_at(const PairContext& ctx, double t, std::span<const Penetra
   sample.penetration = depth.depth;
   sample.gradient = contour_length_gradient(contour);
   sample.gradient += depth.gradient;
+  if (r.proximity_reach > 0) {
+    if (contour.length > 0 || depth.samples_inside > 0) {
+      sample.proximity = r.proximity_reach;  // they overlap: d = 0
+    } else {
+      const Proximity near = proximity(ctx.a, place_a, ctx.b, place_b, r.proximity_reach);
+      sample.proximity = near.deficit;
+      sample.gradient += near.gradient;
+    }
+  }
   return sample;
 }
 
@@ -104,7 +114,9 @@ double severity_time(const std::vector<EnergySample>& samples, double t0, double
   const double contour = by([](const EnergySample& s) { return s.contour_length; });
   if (contour >= 0) return contour;
   const double depth = by([](const EnergySample& s) { return s.penetration; });
-  return depth >= 0 ? depth : 0.5 * (t0 + t1);
+  if (depth >= 0) return depth;
+  const double nearest = by([](const EnergySample& s) { return s.proximity; });
+  return nearest >= 0 ? nearest : 0.5 * (t0 + t1);
 }
 
 }  // namespace
@@ -142,6 +154,7 @@ PairEnergy pair_energy(const scene::Reconfigurable& scene, ShapeCache& shapes, c
   for (const EnergySample& s : samples.energy) {
     result.contour_energy += s.weight * s.contour_length;
     result.penetration_energy += s.weight * s.penetration;
+    result.proximity_energy += s.weight * s.proximity;
   }
   result.severity_time = severity_time(samples.energy, t0, t1);
   result.samples = std::move(samples.energy);
