@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <span>
 
 #include "reconfig/resolve/intersection_contour.h"
@@ -13,6 +14,9 @@
 
 namespace reconfig::resolve {
 namespace {
+
+/// How close the doubling before the last must have come (a multiple of the accuracy).
+constexpr double kEarlierAccuracy = 4;
 
 Eigen::Isometry3d placement(const scene::Reconfigurable& scene, int transition, int part, double t) {
   return scene.pose_at(transition, part, t).to_isometry(scene.parts[part].center);
@@ -134,20 +138,21 @@ PairEnergy pair_energy(const scene::Reconfigurable& scene, ShapeCache& shapes, c
   }
   set_trapezoid_weights(samples.energy, t0, t1);
   double energy = integral(samples.energy);
-  // Double the samples until the integral settles: two doublings in a row each change it by
-  // less than the accuracy (one may agree by luck while a short collision falls between the
-  // samples); an all-zero integral is refined once past the minimum.
-  int settled_doublings = 0;
+  // Double the samples until the integral settles: a doubling changes it by less than the
+  // accuracy right after one that changed it by less than four times that (a first agreement
+  // may be luck while a short collision falls between the samples: the doubling before it
+  // must have been close too); an all-zero integral is refined once past the minimum.
+  double previous_change = std::numeric_limits<double>::infinity();
   while (n < request.max_intervals && t1 > t0) {
     add_midpoints(ctx, t0, t1, samples);
     n *= 2;
     set_trapezoid_weights(samples.energy, t0, t1);
     const double refined = integral(samples.energy);
-    const bool settled = refined > 0 ? std::abs(refined - energy) <= request.relative_accuracy * refined
-                                     : n >= 2 * min_intervals;
+    const double change = refined > 0 ? std::abs(refined - energy) / refined : std::numeric_limits<double>::infinity();
     energy = refined;
-    settled_doublings = settled ? settled_doublings + 1 : 0;
-    if (settled_doublings == 2 || (settled && refined == 0)) break;
+    if (refined == 0 && n >= 2 * min_intervals) break;
+    if (change <= request.relative_accuracy && previous_change <= kEarlierAccuracy * request.relative_accuracy) break;
+    previous_change = change;
   }
   PairEnergy result;
   result.energy = energy;

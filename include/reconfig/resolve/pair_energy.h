@@ -48,7 +48,8 @@ struct PairEnergyRequest {
   int part_a = 0, part_b = 1;
   double t0 = 0, t1 = 1;
   /// The trapezoid rule on uniform samples is refined (the number of intervals doubled) until
-  /// two doublings in a row each change E by less than this fraction of it.
+  /// a doubling changes E by less than this fraction of it right after one that changed it by
+  /// less than four times that fraction.
   double relative_accuracy = 0.01;
   /// The proximity term's reach c (scene units; `proximity_reach`): 0 leaves the term out.
   double proximity_reach = 0;
