@@ -22,6 +22,7 @@
 #include "reconfig/common/write_atomically.h"
 #include "reconfig/render/egl_context.h"
 #include "reconfig/resolve/interval_energy.h"
+#include "reconfig/resolve/proximity.h"
 #include "reconfig/scene/scene_file.h"
 
 namespace reconfig::cli {
@@ -99,6 +100,7 @@ nlohmann::ordered_json to_json(const scene::Reconfigurable& scene, const CheckOu
         intervals.back()["energy"] = e.energy;
         intervals.back()["contour_energy"] = e.contour_energy;
         intervals.back()["penetration_energy"] = e.penetration_energy;
+        intervals.back()["proximity_energy"] = e.proximity_energy;
         intervals.back()["severity_time"] = e.severity_time;
       }
       if (!outcome.views.empty())
@@ -145,8 +147,9 @@ std::string text_report(const scene::Reconfigurable& scene, const CheckOutcome& 
                          box_text(ci.box));
       if (!outcome.energies.empty()) {
         const auto& e = outcome.energies[&transition - outcome.transitions.data()][&ci - transition.intervals.data()];
-        out += fmt::format("      energy {:.4g} (contour {:.4g}, penetration {:.4g}), most severe at t = {:.3f}\n",
-                           e.energy, e.contour_energy, e.penetration_energy, e.severity_time);
+        out += fmt::format(
+            "      energy {:.4g} (contour {:.4g}, penetration {:.4g}, proximity {:.4g}), most severe at t = {:.3f}\n",
+            e.energy, e.contour_energy, e.penetration_energy, e.proximity_energy, e.severity_time);
       }
       if (!outcome.views.empty()) {
         const auto& v = outcome.views[&transition - outcome.transitions.data()][&ci - transition.intervals.data()];
@@ -246,15 +249,19 @@ CheckOutcome run_engine(const scene::Reconfigurable& scene, const CheckOptions& 
           0};
 }
 
-/// The intersection energy and severity time of every interval (--energy).
+/// The intersection energy and severity time of every interval (--energy), its proximity term
+/// reaching as far as the engine's settings say (`resolve::proximity_reach`).
 std::vector<std::vector<resolve::IntervalEnergy>> interval_energies(
-    const scene::Reconfigurable& scene, const std::vector<collision::TransitionCollisions>& transitions) {
+    const scene::Reconfigurable& scene, const std::vector<collision::TransitionCollisions>& transitions,
+    const CheckOptions& options) {
+  const double reach =
+      resolve::proximity_reach(collision::with_settings({}, scene.collision.overridden_by(options.given)));
   resolve::ShapeCache shapes;
   std::vector<std::vector<resolve::IntervalEnergy>> energies;
   for (const auto& transition : transitions) {
     energies.emplace_back();
     for (const auto& ci : transition.intervals)
-      energies.back().push_back(resolve::interval_energy(scene, shapes, transition.transition, ci));
+      energies.back().push_back(resolve::interval_energy(scene, shapes, transition.transition, ci, 0.01, -1, reach));
   }
   return energies;
 }
@@ -303,7 +310,7 @@ int run_check(const CheckOptions& options) {
   // The report needs energies and views too, without printing them unless asked.
   std::vector<std::vector<resolve::IntervalEnergy>> energies;
   std::vector<std::vector<render::BestView>> views;
-  if (options.energy || options.views || visual) energies = interval_energies(scene, outcome.transitions);
+  if (options.energy || options.views || visual) energies = interval_energies(scene, outcome.transitions, options);
   std::optional<render::EglContext> context;  // headless drawing: occlusion counts, pictures
   if (options.views || visual) {
     context.emplace();
@@ -346,8 +353,8 @@ void add_check_command(CLI::App& app, int& exit_code) {
                     "Engine: also report near misses the true motion may turn into collisions (never misses one); "
                     "overrides the scene's");
   command->add_flag("--energy", options->energy,
-                    "Also give each interval its intersection energy (contour length plus penetration depth, "
-                    "integrated over time) and the time it is most severe");
+                    "Also give each interval its intersection energy (contour length plus penetration depth plus "
+                    "proximity deficit, integrated over time) and the time it is most severe");
   command->add_flag("--views", options->views,
                     "Also give each interval the camera that shows it best at its severity time (occlusion "
                     "queries over candidate views, drawn headless; implies --energy)");

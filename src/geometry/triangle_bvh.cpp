@@ -176,6 +176,11 @@ void TriangleBvh::for_each_overlapping_pair(const TriangleBvh& other,
 
 void TriangleBvh::for_each_overlapping_pair(const TriangleBvh& other, const Eigen::Isometry3d& other_to_this,
                                             const std::function<void(int f, int g)>& visit) const {
+  for_each_pair_within(other, other_to_this, 0.0, visit);
+}
+
+void TriangleBvh::for_each_pair_within(const TriangleBvh& other, const Eigen::Isometry3d& other_to_this,
+                                       double distance, const std::function<void(int f, int g)>& visit) const {
   // Each vertex of `other` is moved once, when first met.
   MovedVertices other_moved(other.V_, other_to_this);
   const Eigen::Matrix3d R = other_to_this.linear();
@@ -193,7 +198,7 @@ void TriangleBvh::for_each_overlapping_pair(const TriangleBvh& other, const Eige
     if (!node_known[j]) {
       const Eigen::Vector3d c = other_to_this * box.center();
       const Eigen::Vector3d h = R_abs * (0.5 * box.sizes());
-      const double pad = 1e-12 * (c.cwiseAbs().maxCoeff() + h.maxCoeff());
+      const double pad = 1e-12 * (c.cwiseAbs().maxCoeff() + h.maxCoeff()) + distance;
       node_min[j] = c - h - Eigen::Vector3d::Constant(pad);
       node_max[j] = c + h + Eigen::Vector3d::Constant(pad);
       node_known[j] = 1;
@@ -205,6 +210,10 @@ void TriangleBvh::for_each_overlapping_pair(const TriangleBvh& other, const Eige
     Eigen::AlignedBox3d box(other_moved[other.F_(g, 0)]);
     box.extend(other_moved[other.F_(g, 1)]);
     box.extend(other_moved[other.F_(g, 2)]);
+    if (distance > 0) {
+      box.min().array() -= distance;
+      box.max().array() += distance;
+    }
     return box;
   };
   visit_overlapping_pairs(other, node_box, moved_triangle_box, visit);

@@ -17,6 +17,7 @@
 #include "reconfig/geometry/bounding_box.h"
 #include "reconfig/motion/key_error.h"
 #include "reconfig/resolve/key_dofs.h"
+#include "reconfig/resolve/proximity.h"
 #include "reconfig/scene/edits.h"
 #include "resolve/detail/descent_space.h"
 #include "resolve/detail/energy_objective.h"
@@ -250,7 +251,8 @@ RoundOutcome descend(const scene::Reconfigurable& original, ShapeCache& shapes, 
   std::vector<int> movable;
   for (int part : {pair.first, pair.second})
     if (scene.keyframed_track(tr, part)) movable.push_back(part);
-  const EnergyObjective own{tr, {{pair, windows}}};
+  const double proximity = proximity_reach(request.detector);
+  const EnergyObjective own{tr, {{pair, windows}}, proximity};
   const ObjectiveEnergy before = detail::evaluate(own, scene, shapes);
   round.energy_before = round.energy_after = before.energy;
   if (movable.empty() || before.energy == 0) return {std::move(scene), round};
@@ -259,7 +261,7 @@ RoundOutcome descend(const scene::Reconfigurable& original, ShapeCache& shapes, 
       for (std::string& key : ensure_inner_keys(scene, tr, part, w, before.severity_time))
         round.inserted_keys.push_back(std::move(key));
   const double size = pair_size(scene, pair);
-  const EnergyObjective objective = detail::resolution_objective(scene, tr, pair, windows, movable, size);
+  const EnergyObjective objective = detail::resolution_objective(scene, tr, pair, windows, movable, size, proximity);
   std::vector<std::vector<int>> choices{movable};
   if (movable.size() == 2) choices.insert(choices.end(), {{movable[0]}, {movable[1]}});
   std::optional<scene::Reconfigurable> best;
@@ -328,7 +330,9 @@ AutoResolveResult auto_resolve(const scene::Reconfigurable& input, const AutoRes
     double largest = 0;
     for (const auto& [pair, list] : windows) {
       if (stuck.count(pair)) continue;
-      const double e = detail::evaluate({request.transition, {{pair, list}}}, result.scene, shapes).energy;
+      const double e =
+          detail::evaluate({request.transition, {{pair, list}}, proximity_reach(request.detector)}, result.scene, shapes)
+              .energy;
       if (e > largest) largest = e, chosen = pair;
     }
     if (chosen.first < 0) {

@@ -5,13 +5,18 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <span>
 
 #include "reconfig/resolve/intersection_contour.h"
 #include "reconfig/resolve/penetration.h"
+#include "reconfig/resolve/proximity.h"
 
 namespace reconfig::resolve {
 namespace {
+
+/// How close the doubling before the last must have come (a multiple of the accuracy).
+constexpr double kEarlierAccuracy = 4;
 
 Eigen::Isometry3d placement(const scene::Reconfigurable& scene, int transition, int part, double t) {
   return scene.pose_at(transition, part, t).to_isometry(scene.parts[part].center);
@@ -44,6 +49,15 @@ EnergySample sample_at(const PairContext& ctx, double t, std::span<const Penetra
   sample.penetration = depth.depth;
   sample.gradient = contour_length_gradient(contour);
   sample.gradient += depth.gradient;
+  if (r.proximity_reach > 0) {
+    if (contour.length > 0 || depth.samples_inside > 0) {
+      sample.proximity = r.proximity_reach;  // they overlap: d = 0
+    } else {
+      const Proximity near = proximity(ctx.a, place_a, ctx.b, place_b, r.proximity_reach);
+      sample.proximity = near.deficit;
+      sample.gradient += near.gradient;
+    }
+  }
   return sample;
 }
 
@@ -104,7 +118,9 @@ double severity_time(const std::vector<EnergySample>& samples, double t0, double
   const double contour = by([](const EnergySample& s) { return s.contour_length; });
   if (contour >= 0) return contour;
   const double depth = by([](const EnergySample& s) { return s.penetration; });
-  return depth >= 0 ? depth : 0.5 * (t0 + t1);
+  if (depth >= 0) return depth;
+  const double nearest = by([](const EnergySample& s) { return s.proximity; });
+  return nearest >= 0 ? nearest : 0.5 * (t0 + t1);
 }
 
 }  // namespace
@@ -122,26 +138,28 @@ PairEnergy pair_energy(const scene::Reconfigurable& scene, ShapeCache& shapes, c
   }
   set_trapezoid_weights(samples.energy, t0, t1);
   double energy = integral(samples.energy);
-  // Double the samples until the integral settles: two doublings in a row each change it by
-  // less than the accuracy (one may agree by luck while a short collision falls between the
-  // samples); an all-zero integral is refined once past the minimum.
-  int settled_doublings = 0;
+  // Double the samples until the integral settles: a doubling changes it by less than the
+  // accuracy right after one that changed it by less than four times that (a first agreement
+  // may be luck while a short collision falls between the samples: the doubling before it
+  // must have been close too); an all-zero integral is refined once past the minimum.
+  double previous_change = std::numeric_limits<double>::infinity();
   while (n < request.max_intervals && t1 > t0) {
     add_midpoints(ctx, t0, t1, samples);
     n *= 2;
     set_trapezoid_weights(samples.energy, t0, t1);
     const double refined = integral(samples.energy);
-    const bool settled = refined > 0 ? std::abs(refined - energy) <= request.relative_accuracy * refined
-                                     : n >= 2 * min_intervals;
+    const double change = refined > 0 ? std::abs(refined - energy) / refined : std::numeric_limits<double>::infinity();
     energy = refined;
-    settled_doublings = settled ? settled_doublings + 1 : 0;
-    if (settled_doublings == 2 || (settled && refined == 0)) break;
+    if (refined == 0 && n >= 2 * min_intervals) break;
+    if (change <= request.relative_accuracy && previous_change <= kEarlierAccuracy * request.relative_accuracy) break;
+    previous_change = change;
   }
   PairEnergy result;
   result.energy = energy;
   for (const EnergySample& s : samples.energy) {
     result.contour_energy += s.weight * s.contour_length;
     result.penetration_energy += s.weight * s.penetration;
+    result.proximity_energy += s.weight * s.proximity;
   }
   result.severity_time = severity_time(samples.energy, t0, t1);
   result.samples = std::move(samples.energy);

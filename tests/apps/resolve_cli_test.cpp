@@ -23,7 +23,10 @@ TEST(ResolveCli, CheckEnergyGivesEveryIntervalAnEnergyAndASeverityTime) {
   for (const auto& ci : intervals) {
     EXPECT_GT(ci["energy"].get<double>(), 0);
     EXPECT_NEAR(ci["energy"].get<double>(),
-                ci["contour_energy"].get<double>() + ci["penetration_energy"].get<double>(), 1e-9);
+                ci["contour_energy"].get<double>() + ci["penetration_energy"].get<double>() +
+                    ci["proximity_energy"].get<double>(),
+                1e-9);
+    EXPECT_GT(ci["proximity_energy"].get<double>(), 0);  // the parts cross: D = c throughout
     EXPECT_GE(ci["severity_time"].get<double>(), ci["t0"].get<double>() - 0.02);
     EXPECT_LE(ci["severity_time"].get<double>(), ci["t1"].get<double>() + 0.02);
   }

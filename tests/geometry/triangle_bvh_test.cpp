@@ -126,6 +126,45 @@ TEST(TriangleBvh, MovedPairQueriesFindEveryPairWhoseMovedBoxesOverlap) {
   EXPECT_GT(found_total, 100u);  // the test is not vacuous
 }
 
+TEST(TriangleBvh, PairsWithinADistanceIncludeEveryPairWhoseGrownBoxesOverlap) {
+  std::mt19937 rng(17);
+  std::normal_distribution<double> normal(0, 1);
+  std::size_t found_total = 0, beyond_overlap = 0;
+  for (int trial = 0; trial < 8; ++trial) {
+    const Mesh a = random_soup(rng, 200, 0.1), b = random_soup(rng, 150, 0.1);
+    Eigen::Isometry3d b_to_a = Eigen::Isometry3d::Identity();
+    b_to_a.linear() = Eigen::Quaterniond(normal(rng), normal(rng), normal(rng), normal(rng)).normalized().toRotationMatrix();
+    const Eigen::MatrixX3d moved = (b.V * b_to_a.linear().transpose()).rowwise() + b_to_a.translation().transpose();
+    const double distance = 0.05;
+    Pairs visited;
+    TriangleBvh(a.V, a.F).for_each_pair_within(TriangleBvh(b.V, b.F), b_to_a, distance,
+                                               [&](int f, int g) { visited.emplace_back(f, g); });
+    std::sort(visited.begin(), visited.end());
+    EXPECT_TRUE(std::adjacent_find(visited.begin(), visited.end()) == visited.end()) << "a pair visited twice";
+    // Brute force: the moved triangles' boxes, grown by the distance, overlap.
+    Pairs expected;
+    for (int f = 0; f < a.face_count(); ++f)
+      for (int g = 0; g < b.face_count(); ++g) {
+        AlignedBox3d fa, gb;
+        for (int k = 0; k < 3; ++k) {
+          fa.extend(Vector3d(a.V.row(a.F(f, k))));
+          gb.extend(Vector3d(moved.row(b.F(g, k))));
+        }
+        gb.min().array() -= distance;
+        gb.max().array() += distance;
+        if (fa.intersects(gb)) expected.emplace_back(f, g);
+      }
+    EXPECT_TRUE(std::includes(visited.begin(), visited.end(), expected.begin(), expected.end())) << trial;
+    found_total += expected.size();
+    Pairs overlapping;
+    TriangleBvh(a.V, a.F).for_each_overlapping_pair(TriangleBvh(b.V, b.F), b_to_a,
+                                                    [&](int f, int g) { overlapping.emplace_back(f, g); });
+    beyond_overlap += visited.size() - overlapping.size();
+  }
+  EXPECT_GT(found_total, 100u);   // the test is not vacuous
+  EXPECT_GT(beyond_overlap, 0u);  // and the distance finds more than the boxes' overlaps
+}
+
 TEST(TriangleBvh, NearestMatchesBruteForce) {
   std::mt19937 rng(14);
   std::uniform_real_distribution<double> unit(-0.5, 1.5);

@@ -53,6 +53,25 @@ TEST(PairEnergy, RefinementChangesItByLessThanTheAccuracy) {
   EXPECT_NEAR(energy.energy, finer.energy, 0.015 * finer.energy);
 }
 
+/// The accuracy on random two-part scenes (turning, colliding or passing close): the energy
+/// the stopping rule settles on is within the accuracy of one on four times its samples.
+TEST(PairEnergy, RefinementChangesItByLessThanTheAccuracyOnRandomScenes) {
+  int checked = 0;
+  for (std::uint32_t seed = 1; seed <= 30 && checked < 8; ++seed) {
+    const scene::Reconfigurable scene =
+        reconfig::testing::random_scene(seed, {.parts = 2, .moving = 2, .spread = 0.3, .rotation_keys = 3});
+    ShapeCache shapes;
+    PairEnergyRequest request{.part_a = 0, .part_b = 1, .proximity_reach = 0.002};
+    const PairEnergy energy = pair_energy(scene, shapes, request);
+    if (energy.energy == 0) continue;
+    request.min_intervals = request.max_intervals = static_cast<int>(energy.samples.size() - 1) * 4;
+    const PairEnergy finer = pair_energy(scene, shapes, request);
+    EXPECT_NEAR(energy.energy, finer.energy, 0.015 * finer.energy) << "seed " << seed;
+    ++checked;
+  }
+  EXPECT_GE(checked, 8);
+}
+
 TEST(PairEnergy, FarApartPartsHaveNone) {
   const scene::Reconfigurable scene =
       two_part_scene(geometry::make_box({1, 1, 1}), geometry::make_box({1, 1, 1}), {{3, 0, 0}, {3, 3, 0}, {3, 6, 0}});

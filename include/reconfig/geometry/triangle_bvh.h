@@ -36,6 +36,11 @@ class TriangleBvh {
   void for_each_overlapping_pair(const TriangleBvh& other, const Eigen::Isometry3d& other_to_this,
                                  const std::function<void(int f, int g)>& visit) const;
 
+  /// As the placed `for_each_overlapping_pair`, with `other`'s boxes grown by `distance` ≥ 0 on
+  /// every side: every pair of triangles closer than `distance` to each other is visited.
+  void for_each_pair_within(const TriangleBvh& other, const Eigen::Isometry3d& other_to_this, double distance,
+                            const std::function<void(int f, int g)>& visit) const;
+
   /// The nearest point of the mesh to a query point.
   struct Nearest {
     int triangle = -1;  ///< -1 for an empty mesh

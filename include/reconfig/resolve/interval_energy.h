@@ -3,6 +3,7 @@
 /// The intersection energy of one collision interval: the sum over its pairs of parts.
 
 #include <array>
+#include <optional>
 #include <vector>
 
 #include "reconfig/collision/collision_interval.h"
@@ -16,6 +17,7 @@ struct IntervalEnergy {
   double energy = 0;              ///< Σ over the pairs of their E (pair_energy.h)
   double contour_energy = 0;      ///< Σ ∫ ‖Ic‖ dt (the paper's eq. 1)
   double penetration_energy = 0;  ///< Σ ∫ P dt
+  double proximity_energy = 0;    ///< Σ ∫ D dt
   double severity_time = 0;       ///< the most energetic pair's
   /// Each pair (part a, part b) with its energy and samples.
   std::vector<std::pair<std::array<int, 2>, PairEnergy>> pairs;
@@ -23,8 +25,11 @@ struct IntervalEnergy {
 
 /// The energy of `interval` of `transition` over its time extent widened by `time_margin` on
 /// both sides (clipped to [0, 1]): an interval's ends are rounded to the detector's frames. With
-/// `part` ≥ 0 only the pairs (part, other) are summed, `part` being each pair's part a.
+/// `part` ≥ 0 only the pairs (part, other) are summed, `part` being each pair's part a. The
+/// proximity term's reach is `proximity_reach` if given, else that of the design's own detector
+/// settings (`proximity.h`): pass the detector's when it was run with other settings.
 IntervalEnergy interval_energy(const scene::Reconfigurable& scene, ShapeCache& shapes, int transition,
-                               const collision::CollisionInterval& interval, double time_margin = 0.01, int part = -1);
+                               const collision::CollisionInterval& interval, double time_margin = 0.01, int part = -1,
+                               std::optional<double> proximity_reach = std::nullopt);
 
 }  // namespace reconfig::resolve

@@ -34,12 +34,14 @@ ObjectiveEnergy evaluate(const EnergyObjective& objective, const scene::Reconfig
   double largest = -1;
   for (const auto& [pair, windows] : objective.pairs)
     for (const Window& w : windows) {
+      const bool first = &pair == &objective.pairs.front().first;
       PairEnergyRequest request;
       request.transition = objective.transition;
       request.part_a = pair.first;
       request.part_b = pair.second;
       request.t0 = w.first;
       request.t1 = w.second;
+      request.proximity_reach = first ? objective.proximity_reach : 0.0;
       PairEnergy energy = pair_energy(scene, shapes, request);
       result.energy += energy.energy;
       if (energy.energy > largest) {
@@ -52,8 +54,9 @@ ObjectiveEnergy evaluate(const EnergyObjective& objective, const scene::Reconfig
 }
 
 EnergyObjective resolution_objective(const scene::Reconfigurable& scene, int transition, Pair pair,
-                                     const std::vector<Window>& windows, const std::vector<int>& movable, double reach) {
-  EnergyObjective objective{transition, {{pair, windows}}};
+                                     const std::vector<Window>& windows, const std::vector<int>& movable, double reach,
+                                     double proximity_reach) {
+  EnergyObjective objective{transition, {{pair, windows}}, proximity_reach};
   std::set<Pair> listed{pair};
   const int n = static_cast<int>(scene.parts.size());
   std::vector<Eigen::AlignedBox3d> boxes(n);

@@ -14,10 +14,13 @@ namespace reconfig::resolve::detail {
 using Pair = std::pair<int, int>;
 using Window = std::pair<double, double>;
 
-/// Pairs of parts, each over time windows.
+/// Pairs of parts, each over time windows: first the pair being resolved, whose windows come
+/// from detected intervals and so include the proximity term (`proximity.h`), then the pairs
+/// its moves may run into, without it (parts resting on each other would keep a deficit).
 struct EnergyObjective {
   int transition = 0;
   std::vector<std::pair<Pair, std::vector<Window>>> pairs;
+  double proximity_reach = 0;  ///< of the first pair's energy (0: none)
 };
 
 /// One pair over one window.
@@ -38,6 +41,7 @@ ObjectiveEnergy evaluate(const EnergyObjective& objective, const scene::Reconfig
 /// those windows (boxes of the parts' poses at 33 times, the movable ones widened by `reach`):
 /// a move that resolves the pair by pushing a part into a third one does not lower this.
 EnergyObjective resolution_objective(const scene::Reconfigurable& scene, int transition, Pair pair,
-                                     const std::vector<Window>& windows, const std::vector<int>& movable, double reach);
+                                     const std::vector<Window>& windows, const std::vector<int>& movable, double reach,
+                                     double proximity_reach);
 
 }  // namespace reconfig::resolve::detail
