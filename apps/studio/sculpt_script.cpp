@@ -44,6 +44,28 @@ std::string set_tool(Studio& studio, const std::vector<std::string>& args) {
   return problem;
 }
 
+/// sculpt-center X Y Z: the tool's center in the part's rest frame (the inspector's field).
+std::string set_center(Studio& studio, const std::vector<std::string>& args) {
+  std::string problem;
+  const Eigen::Vector3d center(number(args, 0, "x", problem), number(args, 1, "y", problem), number(args, 2, "z", problem));
+  if (problem.empty()) studio.sculpt().settings().center = center;
+  return problem;
+}
+
+/// sculpt-view +x|-x|+y|-y|+z: the eye on that side, looking at the target level (straight down
+/// for +z), so drags along the other two axes stay in the view plane.
+std::string set_view(Studio& studio, const std::vector<std::string>& args) {
+  static const std::pair<const char*, std::pair<double, double>> kViews[] = {
+      {"+x", {0, 0}}, {"-x", {M_PI, 0}}, {"+y", {M_PI / 2, 0}}, {"-y", {-M_PI / 2, 0}}, {"+z", {-M_PI / 2, view::Camera::kMaxPitch}}};
+  for (const auto& [name, angles] : kViews)
+    if (args.size() == 1 && args[0] == name) {
+      studio.camera().yaw = angles.first;
+      studio.camera().pitch = angles.second;
+      return {};
+    }
+  return "sculpt-view +x|-x|+y|-y|+z";
+}
+
 /// Drags with `button` through `points` (screen), `wheel` steps at the middle one.
 void drag(HeadlessFrontend& frontend, const std::vector<ImVec2>& points, int button, float wheel) {
   SimulatedInput& input = frontend.input();
@@ -137,6 +159,8 @@ bool perform_sculpt_action(HeadlessFrontend& frontend, const std::string& action
   if (!studio.document()) problem = "no design is open";
   else if (action == "sculpt-mode") problem = set_mode(studio, args);
   else if (action == "sculpt-tool") problem = set_tool(studio, args);
+  else if (action == "sculpt-center") problem = set_center(studio, args);
+  else if (action == "sculpt-view") problem = set_view(studio, args);
   else if (action == "sculpt-place") problem = place(frontend, args);
   else if (action == "sculpt-drag") problem = stroke(frontend, args, false);
   else if (action == "sculpt-turn") problem = stroke(frontend, args, true);

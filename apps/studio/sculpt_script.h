@@ -5,6 +5,8 @@
 ///   sculpt-mode on|off                          the K toggle (for the selected part)
 ///   sculpt-tool SHAPE SX SY SZ COATING          sphere|box|capsule|ellipsoid and its sizes,
 ///                                               or `part NAME COATING`: a part baked as the tool
+///   sculpt-center X Y Z                         the tool's center in the part's rest frame
+///   sculpt-view +x|-x|+y|-y|+z                  the camera on that side, level (or from above)
 ///   sculpt-place X Y Z                          right-drag from the tool to where world point
 ///                                               (X, Y, Z) is drawn: the tool lands on the part
 ///   sculpt-drag DX DY DZ [wheel W] [steps N]    left-drag from the tool to where its center

@@ -268,7 +268,7 @@ bool Studio::selected_part_collides_now() const {
 void Studio::draw_gizmo(ImDrawList* draw, const ImVec2& origin, int width, int height) {
   gizmo_.reset();
   const std::optional<motion::Pose> pose = drag_preview_ ? drag_preview_ : selected_pose();
-  if (!pose) return;
+  if (!pose || sculpt_.mode()) return;  // in sculpt mode the left button sculpts
   const Eigen::Vector3d pivot = document_->scene().parts[selected_part_].center + pose->translation;
   gizmo_ = Gizmo::sized_for(camera_, height, gizmo_drag_ ? gizmo_drag_->center : pivot);
   const ImGuiIO& io = ImGui::GetIO();
