@@ -243,7 +243,7 @@ bool SculptPanel::move_tool(Studio& studio, const sculpt::ToolMotion& motion) {
   s.substeps += result.substeps;
   s.vertices_moved += result.vertices_moved;
   s.least_determinant = std::min(s.least_determinant, result.min_jacobian_determinant);
-  return true;
+  return result.vertices_moved > 0 || result.splits > 0 || result.collapses > 0;  // else no edit to show
 }
 
 void SculptPanel::continue_stroke(Studio& studio, const view::Ray& ray) {
@@ -272,7 +272,7 @@ void SculptPanel::continue_stroke(Studio& studio, const view::Ray& ray) {
   if (wheel != 0 && !s.stopped)
     moved = move_tool(studio, sculpt::ToolMotion::scaling(std::pow(kWheelScale, wheel), s.tool.pose().to_world(s.tool_origin))) ||
             moved;
-  if (moved || (s.stopped && s.moves > 0)) show_live(studio);
+  if (moved) show_live(studio);
 }
 
 void SculptPanel::show_live(Studio& studio) {

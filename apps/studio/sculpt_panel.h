@@ -111,7 +111,8 @@ class SculptPanel {
   void place_tool(Studio& studio, const view::Ray& ray);
   bool start_stroke(Studio& studio, const view::Ray& ray);
   void continue_stroke(Studio& studio, const view::Ray& ray);
-  /// One move of the stroke's tool: deforms the stroke's mesh; false if refused (stopped).
+  /// One move of the stroke's tool: deforms the stroke's mesh. @return whether the mesh changed
+  ///   (false also when refused: the stroke is then stopped)
   bool move_tool(Studio& studio, const sculpt::ToolMotion& motion);
   /// The stroke's mesh as the part's, replacing the stroke's previous edit if still the latest.
   void show_live(Studio& studio);

@@ -125,6 +125,26 @@ TEST_F(StudioSculptMode, ARefusedMoveStopsTheStrokeAtItsLastGoodState) {
   EXPECT_EQ(mesh_of("armrest_left").F, before.F);
 }
 
+TEST_F(StudioSculptMode, APartBakedAsTheToolSculptsWhereItIs) {
+  // At t = 0.4 the backrest passes through the left armrest: baked as the tool, it carries the
+  // armrest's vertices inside it along when dragged.
+  studio().set_time(0.4);
+  look_from_the_side();
+  studio().select_part(part("armrest_left"));
+  run_script(*frontend_, "sculpt-mode on\nsculpt-tool part backrest 0.02\n", "baked tool");
+  const geometry::Mesh before = mesh_of("armrest_left");
+  run_script(*frontend_, drag_line({0, 0, 0.01}, 4), "drag the backrest");
+  EXPECT_NE(studio().status().find("sculpted armrest_left"), std::string::npos) << studio().status();
+  EXPECT_NE(mesh_of("armrest_left").V, before.V);
+  EXPECT_TRUE(geometry::find_self_intersections(mesh_of("armrest_left"), 1).pairs.empty());
+  // The tool cannot be the part it sculpts.
+  run_script(*frontend_, "sculpt-tool part armrest_left 0.02\n", "itself");
+  EXPECT_FALSE(studio().sculpt().tool_center(studio()));  // no tool to draw or drag
+  EXPECT_THROW(run_script(*frontend_, drag_line({0, 0, 0.01}, 4), "drag itself"), ScriptError);
+  EXPECT_FALSE(studio().sculpt_selected_part());
+  EXPECT_NE(studio().status().find("another part"), std::string::npos) << studio().status();
+}
+
 TEST_F(StudioSculptMode, KTogglesTheModeAndTheWheelScalesTheTool) {
   look_from_the_side();
   run_script(*frontend_, "key k\n", "no part");
