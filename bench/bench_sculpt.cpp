@@ -19,6 +19,7 @@ using namespace reconfig;
 struct Fixture {
   geometry::Mesh mesh = geometry::make_sphere(1.0, 7);
   Eigen::MatrixX3d normals = sculpt::vertex_normals(mesh);
+  sculpt::MeshIndex index{mesh};
   sculpt::Tool tool = sculpt::Tool::sphere(0.4, {1, 0, 0}, 0.232);
 };
 
@@ -27,14 +28,17 @@ Fixture& fixture() {
   return f;
 }
 
-/// A stroke of one sub-step (|d| below the bound's λ/1.875), back and forth so the mesh stays put.
+/// A stroke of one sub-step (|d| below the bound's λ/1.875), back and forth on a copy of the
+/// mesh (the shared one stays put whatever the number of iterations).
 void run_strokes(benchmark::State& state, const sculpt::StrokeOptions& options) {
-  Fixture& f = fixture();
+  const Fixture& f = fixture();
+  geometry::Mesh mesh = f.mesh;
+  Eigen::MatrixX3d normals = f.normals;
   sculpt::Tool tool = f.tool;
   sculpt::ToolMotion motion = sculpt::ToolMotion::translation({0.1, 0.02, 0});
   int substeps = 0, moved = 0;
   for (auto _ : state) {
-    const sculpt::StrokeResult result = sculpt::deform_points({{tool, motion}}, options, f.mesh.V, f.normals);
+    const sculpt::StrokeResult result = sculpt::deform_points({{tool, motion}}, options, mesh.V, normals);
     if (!result.applied) state.SkipWithError(result.refusal.c_str());
     substeps = result.substeps;
     moved = result.vertices_moved;
@@ -42,7 +46,7 @@ void run_strokes(benchmark::State& state, const sculpt::StrokeOptions& options) 
     motion = motion.inverse();
   }
   state.counters["substeps"] = substeps;
-  state.counters["vertices"] = f.mesh.vertex_count();
+  state.counters["vertices"] = mesh.vertex_count();
   state.counters["moved"] = moved;
 }
 
@@ -62,8 +66,8 @@ void BM_SubstepSphereToolBlended(benchmark::State& state) {
 }
 BENCHMARK(BM_SubstepSphereToolBlended)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-/// One stroke of one sub-step on a fresh copy of the mesh (the copy is not timed), through
-/// `sculpt_mesh` with the given options.
+/// One stroke of one sub-step on a fresh copy of the mesh and its index (the copies are not
+/// timed: a drag keeps both from frame to frame), through `sculpt_mesh` with the given options.
 void run_mesh_stroke(benchmark::State& state, const sculpt::StrokeOptions& options) {
   const Fixture& f = fixture();
   const sculpt::ToolMotion motion = sculpt::ToolMotion::translation({0.1, 0.02, 0});
@@ -72,8 +76,9 @@ void run_mesh_stroke(benchmark::State& state, const sculpt::StrokeOptions& optio
     state.PauseTiming();
     geometry::Mesh mesh = f.mesh;
     Eigen::MatrixX3d normals = f.normals;
+    sculpt::MeshIndex index = f.index;
     state.ResumeTiming();
-    result = sculpt::sculpt_mesh({{f.tool, motion}}, options, mesh, normals);
+    result = sculpt::sculpt_mesh({{f.tool, motion}}, options, mesh, normals, index);
     if (!result.applied) state.SkipWithError(result.refusal.c_str());
   }
   state.counters["moved"] = result.vertices_moved;
@@ -82,14 +87,15 @@ void run_mesh_stroke(benchmark::State& state, const sculpt::StrokeOptions& optio
 }
 
 /// A drag frame: the one-sub-step stroke remeshed in its reach (edges kept between 0.004 and
-/// 0.016, around the icosphere's 0.0077), no self-intersection check.
+/// 0.016, around the icosphere's 0.0077), no self-intersection check. Argument: the threads.
 void BM_DragFrameWithRemeshing(benchmark::State& state) {
+  const tbb::global_control threads(tbb::global_control::max_allowed_parallelism, state.range(0));
   sculpt::StrokeOptions options;
   options.remesh = {0.016, 0.004};
   options.check_self_intersections = false;
   run_mesh_stroke(state, options);
 }
-BENCHMARK(BM_DragFrameWithRemeshing)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_DragFrameWithRemeshing)->Arg(2)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 /// The same stroke without remeshing but with the exact self-intersection test of the whole mesh.
 void BM_StrokeWithSelfIntersectionCheck(benchmark::State& state) { run_mesh_stroke(state, {}); }

@@ -99,7 +99,7 @@ void Studio::draw_inspector() {
   }
   if (ImGui::Button("Insert key (I)")) insert_key();
   draw_resolve_section();
-  draw_sculpt_section();
+  sculpt_.draw(*this);
 
   ImGui::Separator();
   ImGui::BeginDisabled(document_->undo_label().empty());

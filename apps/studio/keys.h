@@ -12,6 +12,7 @@ constexpr int kF = 70;
 constexpr int kG = 71;
 constexpr int kH = 72;
 constexpr int kI = 73;
+constexpr int kK = 75;
 constexpr int kO = 79;
 constexpr int kP = 80;
 constexpr int kS = 83;

@@ -9,6 +9,7 @@
 
 #include "authoring_script.h"
 #include "keys.h"
+#include "sculpt_script.h"
 #include "shaping_script.h"
 #include "reconfig/render/image.h"
 
@@ -369,6 +370,8 @@ class Runner {
     } else if (action == "save") {
       const bool saved = args.empty() ? studio().save() : studio().save_as(args[0]);
       if (!saved) fail(studio().status());
+    } else if (std::string sculpt_failure; perform_sculpt_action(frontend_, action, args, sculpt_failure)) {
+      if (!sculpt_failure.empty()) fail(sculpt_failure);
     } else if (std::string problem; perform_shaping_action(frontend_, action, args, problem)) {
       if (!problem.empty()) fail(problem);
     } else if (!run_authoring_action(frontend_, action, args, [this](const std::string& why) { fail(why); })) {

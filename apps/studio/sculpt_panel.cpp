@@ -1,15 +1,15 @@
-// Sculpting in the studio: the inspector's Sculpt section shapes the selected part with a swept
-// tool (the sculpt module, Sweepers) — pick a tool, its size, coating and place in the part's
-// frame, one stroke (translate, scale or rotate), the mirror plane — and applies it as one
-// undoable edit of the part's mesh; the collision service then re-detects the part's
-// transitions.
+// Sculpting in the studio (sculpt_panel.h): the inspector's Sculpt section and the sculpt mode's
+// strokes, each one undoable edit of the selected part's mesh.
+
+#include "sculpt_panel.h"
 
 #include <fmt/format.h>
 
-#include <Eigen/Geometry>
 #include <cmath>
 
 #include "reconfig/geometry/bounding_box.h"
+#include "reconfig/geometry/mesh_check.h"
+#include "reconfig/geometry/primitives.h"
 #include "reconfig/scene/edits.h"
 #include "reconfig/sculpt/sculpt_stroke.h"
 #include "studio.h"
@@ -17,21 +17,16 @@
 namespace reconfig::studio {
 namespace {
 
-/// The settings' tool, or a message saying what is wrong with them.
-std::optional<sculpt::Tool> make_tool(const Studio::SculptSettings& s, std::string& problem) {
-  if (!(s.coating > 0)) problem = "the coating must be > 0";
-  else if (!(s.size.x() > 0) || (s.shape != 0 && s.shape != 2 && !(s.size.minCoeff() > 0)) || (s.shape == 2 && s.size.y() < 0))
-    problem = "the tool's sizes must be > 0";
-  if (!problem.empty()) return std::nullopt;
-  switch (s.shape) {
-    case 0: return sculpt::Tool::sphere(s.size.x(), s.center, s.coating);
-    case 1: return sculpt::Tool::box(s.size, s.center, s.coating);
-    case 2: return sculpt::Tool::capsule(s.size.x(), s.size.y(), s.center, s.coating);
-    default: return sculpt::Tool::ellipsoid(s.size, s.center, s.coating);
-  }
+constexpr double kWheelScale = 1.1;  ///< the tool's scaling per wheel step during a stroke
+constexpr int kToolSubdivisions = 2;  ///< of the spheres the round tools are drawn with
+
+/// `mesh` with every vertex mapped by `map`.
+geometry::Mesh mapped(geometry::Mesh mesh, const auto& map) {
+  for (int v = 0; v < mesh.vertex_count(); ++v) mesh.V.row(v) = map(Eigen::Vector3d(mesh.V.row(v))).transpose();
+  return mesh;
 }
 
-std::optional<sculpt::ToolMotion> make_motion(const Studio::SculptSettings& s, std::string& problem) {
+std::optional<sculpt::ToolMotion> make_motion(const SculptPanel::Settings& s, std::string& problem) {
   if (s.stroke == 0) return sculpt::ToolMotion::translation(s.translation);
   if (s.stroke == 1) {
     if (!(s.factor > 0)) problem = "the scaling factor must be > 0";
@@ -42,53 +37,338 @@ std::optional<sculpt::ToolMotion> make_motion(const Studio::SculptSettings& s, s
                          : std::nullopt;
 }
 
+sculpt::StrokeOptions stroke_options(const SculptPanel::Settings& s) {
+  sculpt::StrokeOptions options;
+  options.mirror.axis = s.mirror;
+  options.remesh = {s.remesh, s.remesh / 4};
+  return options;
+}
+
 }  // namespace
 
-bool Studio::sculpt_selected_part() {
-  if (!document_ || selected_part_ < 0) {
-    set_status("sculpt: select a part first", true);
-    return false;
+// ---- the tool ------------------------------------------------------------------------------
+
+std::optional<Eigen::Isometry3d> SculptPanel::part_to_world(const Studio& studio) const {
+  const std::optional<motion::Pose> pose = studio.selected_pose();
+  if (!pose) return std::nullopt;
+  return pose->to_isometry(studio.document()->scene().parts[studio.selected_part()].center);
+}
+
+std::optional<sculpt::Tool> SculptPanel::make_tool(const Studio& studio, geometry::Mesh* shape,
+                                                   Eigen::Vector3d* origin, std::string& problem) const {
+  const Settings& s = settings_;
+  const scene::Reconfigurable& scene = studio.document()->scene();
+  if (!(s.coating > 0)) problem = "the coating must be > 0";
+  else if (s.shape == 4 && (s.tool_part < 0 || s.tool_part >= int(scene.parts.size()) || s.tool_part == studio.selected_part()))
+    problem = "pick another part of the design as the tool";
+  else if (s.shape != 4 && (!(s.size.x() > 0) || (s.shape != 0 && s.shape != 2 && !(s.size.minCoeff() > 0)) ||
+                            (s.shape == 2 && s.size.y() < 0)))
+    problem = "the tool's sizes must be > 0";
+  if (!problem.empty()) return std::nullopt;
+  if (origin) *origin = Eigen::Vector3d::Zero();
+  switch (s.shape) {
+    case 0:
+      if (shape) *shape = geometry::make_sphere(s.size.x(), kToolSubdivisions);
+      return sculpt::Tool::sphere(s.size.x(), s.center, s.coating);
+    case 1:
+      if (shape) *shape = geometry::make_box(s.size);
+      return sculpt::Tool::box(s.size, s.center, s.coating);
+    case 2:
+      if (shape) {
+        const double half = s.size.y() / 2;
+        *shape = mapped(geometry::make_sphere(s.size.x(), kToolSubdivisions), [&](const Eigen::Vector3d& p) {
+          return Eigen::Vector3d(p.x(), p.y(), p.z() + (p.z() >= 0 ? half : -half));
+        });
+      }
+      return sculpt::Tool::capsule(s.size.x(), s.size.y(), s.center, s.coating);
+    case 3:
+      if (shape)
+        *shape = mapped(geometry::make_sphere(1.0, kToolSubdivisions),
+                        [&](const Eigen::Vector3d& p) { return Eigen::Vector3d(p.cwiseProduct(s.size)); });
+      return sculpt::Tool::ellipsoid(s.size, s.center, s.coating);
+    default: break;
   }
-  const scene::Part& part = document_->scene().parts[selected_part_];
+  // A part baked as the tool, where it is now, in the sculpted part's rest frame.
+  const scene::Part& tool_part = scene.parts[s.tool_part];
+  const std::optional<Eigen::Isometry3d> to_world = part_to_world(studio);
+  const std::optional<motion::Pose> pose =
+      studio.active_transition_ >= 0 ? std::optional(scene.pose_at(studio.active_transition_, s.tool_part, studio.time_))
+                                     : scene.states[studio.active_state_].pose_of(tool_part.name);
+  if (!to_world || !pose) {
+    problem = "the tool part has no pose here";
+    return std::nullopt;
+  }
+  const Eigen::Isometry3d to_rest = to_world->inverse() * pose->to_isometry(tool_part.center);
+  geometry::Mesh baked = mapped(tool_part.mesh, [&](const Eigen::Vector3d& p) { return Eigen::Vector3d(to_rest * p); });
+  if (!geometry::check_mesh(baked).is_closed()) {
+    problem = tool_part.name + " is not closed: it cannot be baked as a tool";
+    return std::nullopt;
+  }
+  if (origin) *origin = geometry::bounding_box(baked.V).center();
+  sculpt::Tool tool = sculpt::Tool::baked(baked, s.coating);
+  if (shape) *shape = std::move(baked);
+  return tool;
+}
+
+std::optional<Eigen::Vector3d> SculptPanel::tool_center(const Studio& studio) const {
+  if (stroke_) return stroke_->to_world * stroke_->tool.pose().to_world(stroke_->tool_origin);
+  if (!mode_ || !studio.document() || studio.selected_part() < 0) return std::nullopt;
+  const std::optional<Eigen::Isometry3d> to_world = part_to_world(studio);
+  if (!to_world) return std::nullopt;
+  if (settings_.shape != 4) return *to_world * settings_.center;
   std::string problem;
-  const std::optional<sculpt::Tool> tool = make_tool(sculpt_settings_, problem);
-  const std::optional<sculpt::ToolMotion> motion = tool ? make_motion(sculpt_settings_, problem) : std::nullopt;
-  if (!motion) {
-    set_status("sculpt: " + problem, true);
+  Eigen::Vector3d origin;
+  if (!make_tool(studio, nullptr, &origin, problem)) return std::nullopt;
+  return *to_world * origin;
+}
+
+void SculptPanel::add_to_draw_list(const Studio& studio, render::DrawList& list) const {
+  if (!mode_ || !studio.document() || studio.selected_part() < 0) return;
+  geometry::Mesh shape;
+  std::string problem;
+  std::optional<sculpt::Tool> tool = stroke_ ? std::optional(stroke_->tool) : make_tool(studio, &shape, nullptr, problem);
+  const std::optional<Eigen::Isometry3d> to_world = stroke_ ? std::optional(stroke_->to_world) : part_to_world(studio);
+  if (!tool || !to_world) return;
+  if (stroke_) make_tool(studio, &shape, nullptr, problem);  // the shape in the tool's own frame
+  if (shape.empty()) return;
+  render::MeshItem item;
+  item.V = mapped(shape, [&](const Eigen::Vector3d& p) { return Eigen::Vector3d(*to_world * tool->pose().to_world(p)); }).V;
+  item.F = shape.F;
+  item.color = stroke_ && stroke_->stopped ? Eigen::Vector3f(0.9f, 0.2f, 0.15f) : Eigen::Vector3f(0.95f, 0.6f, 0.15f);
+  item.opacity = 0.35f;
+  list.meshes.push_back(std::move(item));
+}
+
+// ---- a stroke by numbers -------------------------------------------------------------------
+
+bool SculptPanel::apply_stroke(Studio& studio) {
+  if (!studio.document() || studio.selected_part() < 0) {
+    studio.set_status("sculpt: select a part first", true);
     return false;
   }
-  sculpt::StrokeOptions options;
-  options.mirror.axis = sculpt_settings_.mirror;
-  options.remesh = {sculpt_settings_.remesh, sculpt_settings_.remesh / 4};
+  const scene::Part& part = studio.document()->scene().parts[studio.selected_part()];
+  std::string problem;
+  const std::optional<sculpt::Tool> tool = make_tool(studio, nullptr, nullptr, problem);
+  const std::optional<sculpt::ToolMotion> motion = tool ? make_motion(settings_, problem) : std::nullopt;
+  if (!motion) {
+    studio.set_status("sculpt: " + problem, true);
+    return false;
+  }
   geometry::Mesh mesh = part.mesh;
   Eigen::MatrixX3d no_normals(0, 3);
-  const sculpt::StrokeResult result = sculpt::sculpt_mesh({{*tool, *motion}}, options, mesh, no_normals);
+  const sculpt::StrokeResult result = sculpt::sculpt_mesh({{*tool, *motion}}, stroke_options(settings_), mesh, no_normals);
   if (!result.applied) {
-    set_status(fmt::format("sculpt: {} refused the stroke: {}", part.name, result.refusal), true);
+    studio.set_status(fmt::format("sculpt: {} refused the stroke: {}", part.name, result.refusal), true);
     return false;
   }
   const std::string name = part.name;  // `part` does not outlive the edit
-  if (!execute(scene::replace_part_mesh(name, std::move(mesh)))) return false;
-  set_status(fmt::format("sculpted {}: {} sub-steps, {} vertices moved, least det J {:.3g}", name, result.substeps,
-                         result.vertices_moved, result.min_jacobian_determinant));
+  if (!studio.execute(scene::replace_part_mesh(name, std::move(mesh)))) return false;
+  studio.set_status(fmt::format("sculpted {}: {} sub-steps, {} vertices moved, least det J {:.3g}", name,
+                                result.substeps, result.vertices_moved, result.min_jacobian_determinant));
   return true;
 }
 
-void Studio::draw_sculpt_section() {
-  if (!document_ || selected_part_ < 0) return;
-  SculptSettings& s = sculpt_settings_;
+// ---- sculpt mode ---------------------------------------------------------------------------
+
+bool SculptPanel::set_mode(Studio& studio, bool on) {
+  if (stroke_) finish_stroke(studio);
+  placing_ = false;
+  if (on && (!studio.document() || studio.selected_part() < 0)) {
+    studio.set_status("sculpt mode: select a part first", true);
+    on = false;
+  }
+  mode_ = on;
+  if (on)
+    studio.set_status(fmt::format("sculpt mode for {}: right-drag places the tool, left-drag sculpts (K leaves)",
+                                  studio.document()->scene().parts[studio.selected_part()].name));
+  return mode_;
+}
+
+std::optional<Eigen::Vector3d> SculptPanel::hit_part(const Studio& studio, const view::Ray& ray) const {
+  const std::optional<Eigen::Isometry3d> to_world = part_to_world(studio);
+  if (!to_world) return std::nullopt;
+  const geometry::Mesh& mesh = studio.document()->scene().parts[studio.selected_part()].mesh;
+  const Eigen::MatrixX3d V = (mesh.V * to_world->linear().transpose()).rowwise() + to_world->translation().transpose();
+  const std::optional<view::MeshHit> hit = view::ray_mesh(ray, V, mesh.F);
+  if (!hit) return std::nullopt;
+  return ray.origin + hit->s * ray.direction;
+}
+
+void SculptPanel::place_tool(Studio& studio, const view::Ray& ray) {
+  const std::optional<Eigen::Vector3d> hit = hit_part(studio, ray);
+  const std::optional<Eigen::Isometry3d> to_world = part_to_world(studio);
+  if (!hit || !to_world || settings_.shape == 4) return;  // a baked part stays where it is
+  settings_.center = to_world->inverse() * *hit;
+}
+
+bool SculptPanel::start_stroke(Studio& studio, const view::Ray& ray) {
+  const std::optional<Eigen::Isometry3d> to_world = part_to_world(studio);
+  if (!to_world) return false;
+  geometry::Mesh shape;
+  Eigen::Vector3d origin;
+  std::string problem;
+  const std::optional<sculpt::Tool> tool = make_tool(studio, &shape, &origin, problem);
+  if (!tool) {
+    studio.set_status("sculpt: " + problem, true);
+    return false;
+  }
+  const geometry::Mesh world_shape =
+      mapped(shape, [&](const Eigen::Vector3d& p) { return Eigen::Vector3d(*to_world * tool->pose().to_world(p)); });
+  if (!hit_part(studio, ray) && !view::ray_mesh(ray, world_shape.V, world_shape.F)) return false;
+  const scene::Part& part = studio.document()->scene().parts[studio.selected_part()];
+  Stroke stroke{.part = part.name, .mesh = part.mesh, .tool = *tool};
+  stroke.index = sculpt::MeshIndex(stroke.mesh);
+  stroke.tool_origin = origin;
+  stroke.to_world = *to_world;
+  stroke.plane_normal = studio.camera().forward();
+  const Eigen::Vector3d center = *to_world * tool->pose().to_world(origin);
+  const std::optional<double> s = view::ray_plane(ray, center, stroke.plane_normal);
+  stroke.last_point = s ? Eigen::Vector3d(ray.origin + *s * ray.direction) : center;
+  stroke_ = std::move(stroke);
+  return true;
+}
+
+bool SculptPanel::move_tool(Studio& studio, const sculpt::ToolMotion& motion) {
+  Stroke& s = *stroke_;
+  const sculpt::StrokeResult result = sculpt::sculpt_mesh({{s.tool, motion}}, stroke_options(settings_), s.mesh, s.normals, s.index);
+  if (!result.applied) {
+    s.stopped = true;
+    studio.set_status(fmt::format("sculpt: {} refused the move, the stroke stops at its last good state: {}", s.part,
+                                  result.refusal),
+                      true);
+    return false;
+  }
+  s.tool = result.tools.front();
+  s.moves += 1;
+  s.substeps += result.substeps;
+  s.vertices_moved += result.vertices_moved;
+  s.least_determinant = std::min(s.least_determinant, result.min_jacobian_determinant);
+  return result.vertices_moved > 0 || result.splits > 0 || result.collapses > 0;  // else no edit to show
+}
+
+void SculptPanel::continue_stroke(Studio& studio, const view::Ray& ray) {
+  Stroke& s = *stroke_;
+  if (s.stopped) return;
+  const Eigen::Matrix3d to_rest = s.to_world.linear().transpose();
+  const Eigen::Vector3d center_rest = s.tool.pose().to_world(s.tool_origin);
+  bool moved = false;
+  if (drag_mode == DragMode::kMove) {
+    if (const std::optional<double> t = view::ray_plane(ray, s.last_point, s.plane_normal)) {
+      const Eigen::Vector3d point = ray.origin + *t * ray.direction;
+      const Eigen::Vector3d d = to_rest * (point - s.last_point);
+      s.last_point = point;
+      if (d.norm() > 0) moved = move_tool(studio, sculpt::ToolMotion::translation(d));
+    }
+  } else if (const std::optional<ImVec2> at = studio.viewport_point(s.to_world * center_rest)) {
+    const ImVec2 mouse = ImGui::GetIO().MousePos;
+    const double angle = std::atan2(mouse.y - at->y, mouse.x - at->x);
+    if (s.last_angle && angle != *s.last_angle) {
+      const double turn = std::remainder(angle - *s.last_angle, 2 * M_PI);  // clockwise on screen: about the view axis
+      moved = move_tool(studio, sculpt::ToolMotion::rotation(to_rest * s.plane_normal, turn, center_rest));
+    }
+    s.last_angle = angle;
+  }
+  const float wheel = ImGui::GetIO().MouseWheel;
+  if (wheel != 0 && !s.stopped)
+    moved = move_tool(studio, sculpt::ToolMotion::scaling(std::pow(kWheelScale, wheel), s.tool.pose().to_world(s.tool_origin))) ||
+            moved;
+  if (moved) show_live(studio);
+}
+
+void SculptPanel::show_live(Studio& studio) {
+  Stroke& s = *stroke_;
+  Document& document = *studio.document();
+  if (s.live && document.version() == s.live_version) document.undo();
+  s.live = studio.execute(scene::replace_part_mesh(s.part, s.mesh));
+  s.live_version = document.version();
+  if (s.stopped)  // the refusal stays in the status line
+    studio.set_status(fmt::format("sculpt: {} refused a move; the stroke stopped at its last good state", s.part), true);
+}
+
+void SculptPanel::finish_stroke(Studio& studio) {
+  const Stroke s = std::move(*stroke_);
+  stroke_.reset();
+  if (s.moves == 0) return;
+  settings_.center = s.tool.pose().to_world(s.tool_origin);  // the next stroke starts where this one ended
+  if (settings_.shape != 4) settings_.size *= s.tool.pose().scale;
+  if (!s.stopped)
+    studio.set_status(fmt::format("sculpted {}: {} moves, {} sub-steps, {} vertex moves, least det J {:.3g}", s.part,
+                                  s.moves, s.substeps, s.vertices_moved, s.least_determinant));
+}
+
+bool SculptPanel::handle_mouse(Studio& studio, const view::Ray& ray, bool hovered) {
+  if (!mode_) return false;
+  if (!studio.document() || studio.selected_part() < 0) {
+    set_mode(studio, false);
+    return false;
+  }
+  if (stroke_) {
+    if (ImGui::IsMouseDown(ImGuiMouseButton_Left)) continue_stroke(studio, ray);
+    else finish_stroke(studio);
+    return true;
+  }
+  if (placing_) {
+    if (ImGui::IsMouseDown(ImGuiMouseButton_Right)) place_tool(studio, ray);
+    else placing_ = false;
+    return true;
+  }
+  if (!hovered) return false;
+  if (ImGui::IsMouseClicked(ImGuiMouseButton_Right) && hit_part(studio, ray)) {
+    placing_ = true;
+    place_tool(studio, ray);
+    return true;
+  }
+  return ImGui::IsMouseClicked(ImGuiMouseButton_Left) && start_stroke(studio, ray);
+}
+
+// ---- the inspector's section ---------------------------------------------------------------
+
+void SculptPanel::draw_mode_controls(Studio& studio) {
+  bool on = mode_;
+  if (ImGui::Checkbox("sculpt mode (K)", &on)) set_mode(studio, on);
+  if (!mode_) return;
+  ImGui::SameLine();
+  int mode = static_cast<int>(drag_mode);
+  ImGui::RadioButton("move", &mode, 0);
+  ImGui::SameLine();
+  ImGui::RadioButton("turn", &mode, 1);
+  drag_mode = static_cast<DragMode>(mode);
+  ImGui::TextDisabled("right-drag: place on the surface; left-drag: sculpt, wheel: scale");
+}
+
+void SculptPanel::draw(Studio& studio) {
+  if (!studio.document() || studio.selected_part() < 0) return;
+  Settings& s = settings_;
   ImGui::Separator();
   if (!ImGui::CollapsingHeader("Sculpt")) return;
-  const char* shapes[] = {"sphere", "box", "capsule", "ellipsoid"};
-  ImGui::Combo("tool", &s.shape, shapes, 4);
-  const char* size_label = s.shape == 0 ? "radius" : s.shape == 1 ? "edges" : s.shape == 2 ? "radius, length" : "semi-axes";
-  ImGui::InputScalarN(size_label, ImGuiDataType_Double, s.size.data(), s.shape == 0 ? 1 : s.shape == 2 ? 2 : 3, nullptr,
-                      nullptr, "%.4f");
+  draw_mode_controls(studio);
+  const char* shapes[] = {"sphere", "box", "capsule", "ellipsoid", "a part"};
+  ImGui::Combo("tool", &s.shape, shapes, 5);
+  if (s.shape == 4) {
+    const auto& parts = studio.document()->scene().parts;
+    const char* current = s.tool_part >= 0 && s.tool_part < int(parts.size()) ? parts[s.tool_part].name.c_str() : "(pick)";
+    if (ImGui::BeginCombo("tool part", current)) {
+      for (int p = 0; p < int(parts.size()); ++p)
+        if (p != studio.selected_part() && ImGui::Selectable(parts[p].name.c_str(), p == s.tool_part)) s.tool_part = p;
+      ImGui::EndCombo();
+    }
+  } else {
+    const char* size_label = s.shape == 0 ? "radius" : s.shape == 1 ? "edges" : s.shape == 2 ? "radius, length" : "semi-axes";
+    ImGui::InputScalarN(size_label, ImGuiDataType_Double, s.size.data(), s.shape == 0 ? 1 : s.shape == 2 ? 2 : 3, nullptr,
+                        nullptr, "%.4f");
+  }
   ImGui::InputDouble("coating", &s.coating, 0, 0, "%.4f");
-  ImGui::InputScalarN("tool center", ImGuiDataType_Double, s.center.data(), 3, nullptr, nullptr, "%.4f");
-  ImGui::SameLine();
-  if (ImGui::SmallButton("part center"))
-    s.center = geometry::bounding_box(document_->scene().parts[selected_part_].mesh.V).center();
+  if (s.shape != 4) {
+    ImGui::InputScalarN("tool center", ImGuiDataType_Double, s.center.data(), 3, nullptr, nullptr, "%.4f");
+    ImGui::SameLine();
+    if (ImGui::SmallButton("part center"))
+      s.center = geometry::bounding_box(studio.document()->scene().parts[studio.selected_part()].mesh.V).center();
+  }
+  int mirror = s.mirror + 1;
+  const char* mirrors[] = {"no mirror", "mirror x = 0", "mirror y = 0", "mirror z = 0"};
+  if (ImGui::Combo("mirror", &mirror, mirrors, 4)) s.mirror = mirror - 1;
+  ImGui::InputDouble("remesh edge", &s.remesh, 0, 0, "%.4f");
+  ImGui::Separator();
   const char* strokes[] = {"translate", "scale", "rotate"};
   ImGui::Combo("stroke", &s.stroke, strokes, 3);
   if (s.stroke == 0) ImGui::InputScalarN("by", ImGuiDataType_Double, s.translation.data(), 3, nullptr, nullptr, "%.4f");
@@ -97,11 +377,7 @@ void Studio::draw_sculpt_section() {
     ImGui::InputScalarN("axis", ImGuiDataType_Double, s.axis.data(), 3, nullptr, nullptr, "%.3f");
     ImGui::InputDouble("degrees", &s.degrees, 0, 0, "%.2f");
   }
-  int mirror = s.mirror + 1;
-  const char* mirrors[] = {"no mirror", "mirror x = 0", "mirror y = 0", "mirror z = 0"};
-  if (ImGui::Combo("mirror", &mirror, mirrors, 4)) s.mirror = mirror - 1;
-  ImGui::InputDouble("remesh edge", &s.remesh, 0, 0, "%.4f");
-  if (ImGui::Button("Apply stroke")) sculpt_selected_part();
+  if (ImGui::Button("Apply stroke")) apply_stroke(studio);
   ImGui::TextDisabled("in the part's rest frame; each stroke is one undoable edit");
 }
 

@@ -223,6 +223,7 @@ void Studio::handle_shortcuts() {
     if (ImGui::IsKeyPressed(keys::kH, false)) request_hint();
     if (ImGui::IsKeyPressed(keys::kV, false)) jump_to_best_view();
     if (ImGui::IsKeyPressed(keys::kEscape, false)) select_part(-1);
+    if (ImGui::IsKeyPressed(keys::kK, false)) sculpt_.set_mode(*this, !sculpt_.mode());
   }
 }
 

@@ -27,6 +27,7 @@
 #include "handle_drag.h"
 #include "linkage_panel.h"
 #include "pip_panel.h"
+#include "sculpt_panel.h"
 #include "shaping_panel.h"
 #include "reconfig/render/occlusion_counter.h"
 #include "reconfig/render/render_target.h"
@@ -71,6 +72,7 @@ struct StudioOptions {
 
 class Studio {
   friend class ShapingPanel;  // its status messages
+  friend class SculptPanel;   // its status messages and the time it bakes a tool part at
 
  public:
   /// Needs the GL context current (the renderer and viewport image live in it).
@@ -193,28 +195,12 @@ class Studio {
     bool sliding = false;               ///< a slide's edit is applied and may be replaced
   };
   const std::optional<HintView>& resolution_hint() const { return hint_; }
-  /// A sculpting stroke for the selected part (sculpt_panel.cpp), in the part's rest frame:
-  /// a tool of `shape` at `center` moved by one translation, scaling (about its center) or
-  /// rotation (about an axis through its center), mirrored in a coordinate plane if asked.
-  struct SculptSettings {
-    int shape = 0;  ///< 0 sphere (radius size.x), 1 box (edge lengths), 2 capsule (radius, length), 3 ellipsoid
-    Eigen::Vector3d size = Eigen::Vector3d::Constant(0.05);
-    double coating = 0.05;
-    Eigen::Vector3d center = Eigen::Vector3d::Zero();
-    int stroke = 0;  ///< 0 translate, 1 scale, 2 rotate
-    Eigen::Vector3d translation = Eigen::Vector3d(0, 0, 0.02);
-    double factor = 1.2;
-    Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();
-    double degrees = 30;
-    int mirror = -1;    ///< −1 none, 0 x = 0, 1 y = 0, 2 z = 0
-    double remesh = 0;  ///< > 0: remesh to edges of at most this length (and at least a quarter)
-  };
-  SculptSettings& sculpt_settings() { return sculpt_settings_; }
-  /// Applies the stroke of `sculpt_settings()` to the selected part's mesh as one undoable edit
-  /// (saved beside the design), the collision service re-detecting the part's transitions.
-  /// @return false (the status line says why) with no part selected, bad settings, or a stroke
-  ///   the foldover or self-intersection checks refuse
-  bool sculpt_selected_part();
+  /// Sculpting the selected part (sculpt_panel.h); the settings and stroke by numbers
+  /// forwarded for scripts and tests.
+  SculptPanel& sculpt() { return sculpt_; }
+  using SculptSettings = SculptPanel::Settings;
+  SculptSettings& sculpt_settings() { return sculpt_.settings(); }
+  bool sculpt_selected_part() { return sculpt_.apply_stroke(*this); }
   /// The best view (V, reconfigurables §4.3) of the collision interval being worked on (of the
   /// selected part, under the current time, else the nearest): the camera glides there, and the
   /// time moves into the interval when it is outside. @return false when there is none
@@ -305,8 +291,6 @@ class Studio {
   void restore_view(const ViewNames& names);
   /// The inspector's section for hints and automatic resolution (resolve_panel.cpp).
   void draw_resolve_section();
-  /// The inspector's section for sculpting the selected part (sculpt_panel.cpp).
-  void draw_sculpt_section();
   /// The hint's arrows (at translation keys and handles) and arcs (about the pivot, for
   /// rotation keys), for the viewport's draw list.
   void add_hint_arrows(render::DrawList& list) const;
@@ -374,6 +358,7 @@ class Studio {
   PipPanel pip_;
   LinkagePanel linkage_panel_;
   ShapingPanel shaping_;
+  SculptPanel sculpt_;
 
   std::vector<int> open_transitions_;
   int active_transition_ = -1;
@@ -422,7 +407,6 @@ class Studio {
   };
   std::unique_ptr<AutoResolveJob> auto_resolve_;
   bool auto_resolve_moves_states_ = false;  ///< the inspector's "states may move"
-  SculptSettings sculpt_settings_;  ///< sculpt_panel.cpp
   std::optional<AuthoringDialog> authoring_dialog_;  ///< authoring_menu.cpp: the open dialog
   std::optional<int> graph_drag_from_;                 ///< a drag from this state's node
   int graph_menu_state_ = -1, graph_menu_transition_ = -1;  ///< what the graph's right-click menu is for

@@ -130,7 +130,7 @@ void Studio::render_viewport_image(int width, int height) {
     for (std::size_t i = 0; i < clearance_boxes.size() && i < list.boxes.size(); ++i)
       if (clearance_boxes[i]) list.boxes[i].color = {1.0f, 0.75f, 0.0f};  // amber, as on the timeline
     list.seconds = seconds_;
-    viewport_pulsing_ = !list.boxes.empty();
+    viewport_pulsing_ = !list.boxes.empty() || sculpt_.mode();  // the sculpt tool follows the mouse
     // The selected part's path: where its pivot goes over the transition.
     if (active_transition_ >= 0 && selected_part_ >= 0) {
       render::LineItem path;
@@ -161,6 +161,7 @@ void Studio::render_viewport_image(int width, int height) {
   }
   add_hint_arrows(list);
   shaping_.add_to_draw_list(*this, list);
+  sculpt_.add_to_draw_list(*this, list);
   renderer_.draw(list, camera_, width, height);
   render::RenderTarget::unbind();
 }
@@ -191,6 +192,7 @@ void Studio::handle_viewport_mouse(const ImVec2& origin, int width, int height) 
   const bool hovered = ImGui::IsItemHovered();
   const view::Ray ray = mouse_ray(origin, width, height);
   const Eigen::Vector2d mouse(io.MousePos.x - origin.x, io.MousePos.y - origin.y);
+  if (sculpt_.handle_mouse(*this, ray, hovered)) return;  // sculpt mode's drags (sculpt_panel.h)
 
   if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
     const GizmoHandle handle = gizmo_ ? gizmo_->hit(camera_, width, height, mouse) : GizmoHandle::kNone;
@@ -266,7 +268,7 @@ bool Studio::selected_part_collides_now() const {
 void Studio::draw_gizmo(ImDrawList* draw, const ImVec2& origin, int width, int height) {
   gizmo_.reset();
   const std::optional<motion::Pose> pose = drag_preview_ ? drag_preview_ : selected_pose();
-  if (!pose) return;
+  if (!pose || sculpt_.mode()) return;  // in sculpt mode the left button sculpts
   const Eigen::Vector3d pivot = document_->scene().parts[selected_part_].center + pose->translation;
   gizmo_ = Gizmo::sized_for(camera_, height, gizmo_drag_ ? gizmo_drag_->center : pivot);
   const ImGuiIO& io = ImGui::GetIO();

@@ -1,6 +1,9 @@
 #include "reconfig/sculpt/remesh_in_box.h"
 
+#include "sculpt/detail/remesh.h"
+
 #include <algorithm>
+#include <optional>
 #include <set>
 #include <unordered_map>
 #include <utility>
@@ -22,7 +25,16 @@ struct Work {
   std::vector<std::array<int, 3>> F = {};  ///< a removed face has F[f][0] = −1
   std::vector<int> original_face = {};     ///< per local face of the mesh's, its index there
   std::vector<char> in_box = {};           ///< per vertex
+  /// The faces a split pass looks at: those the pass before split, or where it left long edges
+  /// (the others were looked at and did not change); none yet: every face.
+  std::optional<std::vector<int>> candidates = {};
   bool normals = false;
+  /// The first position and normal of each vertex of the mesh's that was set (for the undo log).
+  std::unordered_map<int, std::pair<Eigen::Vector3d, Eigen::Vector3d>> first_values = {};
+
+  void remember(int v) {
+    if (v < original_vertices && !first_values.count(v)) first_values.emplace(v, std::pair(position(v), normal(v)));
+  }
 
   Eigen::Vector3d position(int v) const {
     return v < original_vertices ? Eigen::Vector3d(mesh_V.row(v)) : new_V[v - original_vertices];
@@ -32,16 +44,19 @@ struct Work {
     return v < original_vertices ? Eigen::Vector3d(mesh_N.row(v)) : new_N[v - original_vertices];
   }
   void set_position(int v, const Eigen::Vector3d& p) {
+    remember(v);
     if (v < original_vertices) mesh_V.row(v) = p.transpose();
     else new_V[v - original_vertices] = p;
   }
   void set_normal(int v, const Eigen::Vector3d& n) {
     if (!normals) return;
+    remember(v);
     if (v < original_vertices) mesh_N.row(v) = n.transpose();
     else new_N[v - original_vertices] = n;
   }
   int vertex_count() const { return original_vertices + static_cast<int>(new_V.size()); }
   double length(int a, int b) const { return (position(a) - position(b)).norm(); }
+  double squared_length(int a, int b) const { return (position(a) - position(b)).squaredNorm(); }
   int add_vertex(const Eigen::Vector3d& p, const Eigen::Vector3d& n, bool inside) {
     new_V.push_back(p);
     new_N.push_back(n);
@@ -61,15 +76,19 @@ struct EdgeSide {
   bool operator<(const EdgeSide& other) const { return edge < other.edge || (edge == other.edge && face < other.face); }
 };
 
-/// The sides of the edges longer than `max_edge` with an endpoint in the box.
+/// The sides of the edges longer than `max_edge` with an endpoint in the box, on the candidate
+/// faces. A long edge has both its faces there (the pass before split it or left it long).
 std::vector<EdgeSide> long_edge_sides(const Work& work, double max_edge) {
   std::vector<EdgeSide> sides;
-  for (int f = 0; f < static_cast<int>(work.F.size()); ++f) {
+  const double max_squared = max_edge * max_edge;
+  const int count = work.candidates ? static_cast<int>(work.candidates->size()) : static_cast<int>(work.F.size());
+  for (int k = 0; k < count; ++k) {
+    const int f = work.candidates ? (*work.candidates)[k] : k;
     const auto& t = work.F[f];
     if (t[0] < 0) continue;
     for (int i = 0; i < 3; ++i) {
       const Edge e = edge(t[i], t[(i + 1) % 3]);
-      if ((work.in_box[e.first] || work.in_box[e.second]) && work.length(e.first, e.second) > max_edge)
+      if ((work.in_box[e.first] || work.in_box[e.second]) && work.squared_length(e.first, e.second) > max_squared)
         sides.push_back({e, f});
     }
   }
@@ -106,19 +125,25 @@ int split_pass(Work& work, const Eigen::AlignedBox3d& box, double max_edge) {
     return x.length > y.length || (x.length == y.length && x.edge < y.edge);
   });
   std::vector<char> used(work.F.size(), 0);
+  std::vector<int> next;  // the next pass's candidates: the faces split, or of edges left long
   int splits = 0;
   for (const LongEdge& long_edge : long_edges) {
+    const auto [a, b] = long_edge.edge;
+    next.insert(next.end(), {long_edge.faces[0], long_edge.faces[1]});
     if (used[long_edge.faces[0]] || used[long_edge.faces[1]]) continue;
     used[long_edge.faces[0]] = used[long_edge.faces[1]] = 1;
-    const auto [a, b] = long_edge.edge;
     Eigen::Vector3d n = work.normal(a) + work.normal(b);
     if (n.norm() > 0) n.normalize();
     const Eigen::Vector3d p = (work.position(a) + work.position(b)) / 2;
     const int m = work.add_vertex(p, n, box.contains(p));
     split_face(work, long_edge.faces[0], a, b, m);
     split_face(work, long_edge.faces[1], a, b, m);
+    next.insert(next.end(), {static_cast<int>(work.F.size()) - 2, static_cast<int>(work.F.size()) - 1});
     ++splits;
   }
+  std::sort(next.begin(), next.end());
+  next.erase(std::unique(next.begin(), next.end()), next.end());
+  work.candidates = std::move(next);
   return splits;
 }
 
@@ -171,7 +196,8 @@ int collapse_pass(Work& work, double min_edge, double max_edge) {
     if (t[0] < 0) continue;
     for (int i = 0; i < 3; ++i) {
       const int a = t[i], b = t[(i + 1) % 3];
-      if (a < b && work.in_box[a] && work.in_box[b] && work.length(a, b) < min_edge) short_edges.push_back({work.length(a, b), {a, b}});
+      if (a < b && work.in_box[a] && work.in_box[b] && work.squared_length(a, b) < min_edge * min_edge)
+        short_edges.push_back({work.length(a, b), {a, b}});
     }
   }
   if (short_edges.empty()) return 0;
@@ -201,11 +227,15 @@ int collapse_pass(Work& work, double min_edge, double max_edge) {
 
 namespace {
 
-/// Puts the work back into the mesh: the changed faces in place and the new ones after them
-/// (cheap when nothing was collapsed); with collapses, the removed faces and the vertices no
-/// face uses any more are dropped (the rest keep their order).
-void write_back(const Work& work, bool collapsed, geometry::Mesh& mesh, Eigen::MatrixX3d& N) {
+/// Puts the work back into the mesh: the changed faces in place and the new ones after them;
+/// the faces collapses removed stay (their numbers go to `changes`) for `compact` to drop.
+void write_back(const Work& work, geometry::Mesh& mesh, Eigen::MatrixX3d& N, detail::RemeshChanges& changes) {
   const int old_faces = mesh.face_count(), added = static_cast<int>(work.F.size() - work.original_face.size());
+  for (const auto& [v, values] : work.first_values) {
+    changes.moved.push_back(v);
+    changes.moved_from.push_back(values.first);
+    changes.moved_normal_from.push_back(values.second);
+  }
   mesh.V.conservativeResize(work.vertex_count(), 3);
   if (work.normals) N.conservativeResize(work.vertex_count(), 3);
   for (std::size_t i = 0; i < work.new_V.size(); ++i) {
@@ -213,14 +243,33 @@ void write_back(const Work& work, bool collapsed, geometry::Mesh& mesh, Eigen::M
     if (work.normals) N.row(work.original_vertices + i) = work.new_N[i].transpose();
   }
   mesh.F.conservativeResize(old_faces + added, 3);
-  std::vector<char> removed(old_faces + added, 0);
   for (std::size_t f = 0; f < work.F.size(); ++f) {
-    const int target = f < work.original_face.size() ? work.original_face[f] : old_faces + int(f - work.original_face.size());
-    if (work.F[f][0] < 0) removed[target] = 1;
-    else mesh.F.row(target) << work.F[f][0], work.F[f][1], work.F[f][2];
+    const bool appended = f >= work.original_face.size();
+    const int target = appended ? old_faces + int(f - work.original_face.size()) : work.original_face[f];
+    const std::array<int, 3> before =
+        appended ? std::array{-1, -1, -1} : std::array{mesh.F(target, 0), mesh.F(target, 1), mesh.F(target, 2)};
+    if (before == work.F[f]) continue;
+    changes.before.push_back(before);
+    changes.faces.push_back(target);
+    if (work.F[f][0] < 0) {
+      changes.removed_faces.push_back(target);
+      if (appended) mesh.F.row(target) = mesh.F.row(work.original_face.front());  // a valid row until compacted
+    } else {
+      mesh.F.row(target) << work.F[f][0], work.F[f][1], work.F[f][2];
+    }
   }
-  if (!collapsed) return;
-  std::vector<int> index(work.vertex_count(), -1);
+}
+
+}  // namespace
+
+namespace detail {
+
+void compact(const std::vector<int>& removed_faces, geometry::Mesh& mesh, Eigen::MatrixX3d& N) {
+  if (removed_faces.empty()) return;
+  const bool normals = N.rows() == mesh.V.rows();
+  std::vector<char> removed(mesh.face_count(), 0);
+  for (int f : removed_faces) removed[f] = 1;
+  std::vector<int> index(mesh.vertex_count(), -1);
   int faces = 0;
   for (int f = 0; f < mesh.face_count(); ++f)
     if (!removed[f]) {
@@ -229,34 +278,47 @@ void write_back(const Work& work, bool collapsed, geometry::Mesh& mesh, Eigen::M
     }
   mesh.F.conservativeResize(faces, 3);
   int vertices = 0;
-  for (int v = 0; v < work.vertex_count(); ++v)
+  for (int v = 0; v < mesh.vertex_count(); ++v)
     if (index[v] == 0) {
       index[v] = vertices;
       mesh.V.row(vertices) = mesh.V.row(v);
-      if (work.normals) N.row(vertices) = N.row(v);
+      if (normals) N.row(vertices) = N.row(v);
       ++vertices;
     }
   mesh.V.conservativeResize(vertices, 3);
-  if (work.normals) N.conservativeResize(vertices, 3);
+  if (normals) N.conservativeResize(vertices, 3);
   for (int f = 0; f < faces; ++f)
     for (int c = 0; c < 3; ++c) mesh.F(f, c) = index[mesh.F(f, c)];
 }
 
-}  // namespace
-
-RemeshResult remesh_in_box(const Eigen::AlignedBox3d& box, const RemeshOptions& options, geometry::Mesh& mesh,
-                           Eigen::MatrixX3d& N) {
+RemeshResult remesh(const Eigen::AlignedBox3d& box, const RemeshOptions& options, const MeshIndex* index,
+                    geometry::Mesh& mesh, Eigen::MatrixX3d& N, RemeshChanges& changes) {
   RemeshResult result;
+  changes = {mesh.vertex_count(), mesh.face_count()};
   if (!(options.max_edge > 0)) return result;
   Work work{mesh.V, N, mesh.vertex_count()};
   work.normals = N.rows() == mesh.V.rows();
   work.in_box.resize(mesh.vertex_count());
-  for (int i = 0; i < mesh.vertex_count(); ++i) work.in_box[i] = box.contains(Eigen::Vector3d(mesh.V.row(i)));
-  for (int f = 0; f < mesh.face_count(); ++f)
-    if (work.in_box[mesh.F(f, 0)] || work.in_box[mesh.F(f, 1)] || work.in_box[mesh.F(f, 2)]) {
-      work.F.push_back({mesh.F(f, 0), mesh.F(f, 1), mesh.F(f, 2)});
-      work.original_face.push_back(f);
-    }
+  std::vector<int> faces;
+  if (index) {
+    const std::vector<int> inside = index->vertices_in(box, mesh.V);
+    for (int v : inside) work.in_box[v] = 1;
+    for (int v : inside)  // each face once: from its first corner in the box
+      for (int f : index->faces_of(v)) {
+        int first = 0;
+        while (!work.in_box[mesh.F(f, first)]) ++first;
+        if (mesh.F(f, first) == v) faces.push_back(f);
+      }
+    std::sort(faces.begin(), faces.end());
+  } else {
+    for (int i = 0; i < mesh.vertex_count(); ++i) work.in_box[i] = box.contains(Eigen::Vector3d(mesh.V.row(i)));
+    for (int f = 0; f < mesh.face_count(); ++f)
+      if (work.in_box[mesh.F(f, 0)] || work.in_box[mesh.F(f, 1)] || work.in_box[mesh.F(f, 2)]) faces.push_back(f);
+  }
+  for (int f : faces) {
+    work.F.push_back({mesh.F(f, 0), mesh.F(f, 1), mesh.F(f, 2)});
+    work.original_face.push_back(f);
+  }
   for (int pass = 0; pass < kMaxPasses; ++pass) {
     const int splits = split_pass(work, box, options.max_edge);
     result.splits += splits;
@@ -267,7 +329,17 @@ RemeshResult remesh_in_box(const Eigen::AlignedBox3d& box, const RemeshOptions& 
     result.collapses += collapses;
     if (collapses == 0) break;
   }
-  if (result.splits > 0 || result.collapses > 0) write_back(work, result.collapses > 0, mesh, N);
+  if (result.splits > 0 || result.collapses > 0) write_back(work, mesh, N, changes);
+  return result;
+}
+
+}  // namespace detail
+
+RemeshResult remesh_in_box(const Eigen::AlignedBox3d& box, const RemeshOptions& options, geometry::Mesh& mesh,
+                           Eigen::MatrixX3d& N) {
+  detail::RemeshChanges changes;
+  const RemeshResult result = detail::remesh(box, options, nullptr, mesh, N, changes);
+  detail::compact(changes.removed_faces, mesh, N);
   return result;
 }
 

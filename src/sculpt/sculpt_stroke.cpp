@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "sculpt/detail/half_step.h"
+#include "sculpt/detail/remesh.h"
 #include "reconfig/geometry/self_intersections.h"
 
 namespace reconfig::sculpt {
@@ -99,39 +100,93 @@ std::string check_grid(const detail::HalfStep& forward, const detail::HalfStep& 
   return {};
 }
 
-/// What a stroke changed so far, to put back if a later sub-step refuses it.
-struct UndoLog {
-  std::vector<char> touched;  ///< per point
-  std::vector<int> rows;
-  std::vector<Eigen::RowVector3d> positions, normals;
+/// What a stroke changed so far, to put back if a later sub-step or check refuses it: the
+/// first position (and normal) of every vertex it moved, the first corners of every face it
+/// changed and the counts before (what was appended is dropped). Once remeshing compacts the
+/// mesh (collapses renumber it), the mesh as it was, rebuilt from the log, instead.
+class StrokeUndo {
+ public:
+  StrokeUndo(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i* F, const Eigen::MatrixX3d& N)
+      : vertices_(static_cast<int>(V.rows())),
+        faces_(F ? static_cast<int>(F->rows()) : 0),
+        normals_(N.rows() == V.rows()),
+        vertex_seen_(vertices_, 0),
+        face_seen_(faces_, 0) {}
 
-  void record(int i, const Eigen::MatrixX3d& V, const Eigen::MatrixX3d& N) {
-    if (touched[i]) return;
-    touched[i] = 1;
-    rows.push_back(i);
-    positions.push_back(V.row(i));
-    if (N.rows() == V.rows()) normals.push_back(N.row(i));
+  void record_vertex(int v, const Eigen::Vector3d& position, const Eigen::Vector3d& normal) {
+    if (whole_ || v >= vertices_ || vertex_seen_[v]) return;
+    vertex_seen_[v] = 1;
+    rows_.push_back(v);
+    positions_.push_back(position);
+    if (normals_) normals_v_.push_back(normal);
   }
-  void restore(Eigen::MatrixX3d& V, Eigen::MatrixX3d& N) const {
-    for (std::size_t k = 0; k < rows.size(); ++k) {
-      V.row(rows[k]) = positions[k];
-      if (N.rows() == V.rows()) N.row(rows[k]) = normals[k];
-    }
+  void record_face(int f, const std::array<int, 3>& corners) {
+    if (whole_ || f >= faces_ || face_seen_[f]) return;
+    face_seen_[f] = 1;
+    face_rows_.push_back(f);
+    face_corners_.push_back(corners);
   }
+  /// Keeps the mesh as it was whole (before a compaction renumbers it); the log stops.
+  void keep_whole(const geometry::Mesh& mesh, const Eigen::MatrixX3d& N) {
+    if (whole_) return;
+    whole_ = std::make_unique<geometry::Mesh>(mesh);
+    whole_N_ = N;
+    Eigen::MatrixX3i& F = whole_->F;
+    put_back(whole_->V, &F, whole_N_);
+  }
+  void restore(Eigen::MatrixX3d& V, Eigen::MatrixX3i* F, Eigen::MatrixX3d& N) {
+    if (!whole_) return put_back(V, F, N);
+    V = std::move(whole_->V);
+    if (F) *F = std::move(whole_->F);
+    N = std::move(whole_N_);
+  }
+  /// The logged vertices that are somewhere else now.
   int moved(const Eigen::MatrixX3d& V) const {
     int count = 0;
-    for (std::size_t k = 0; k < rows.size(); ++k) count += V.row(rows[k]) != positions[k];
+    for (std::size_t k = 0; k < rows_.size(); ++k) count += V.row(rows_[k]).transpose() != positions_[k];
     return count;
   }
+
+ private:
+  void put_back(Eigen::MatrixX3d& V, Eigen::MatrixX3i* F, Eigen::MatrixX3d& N) const {
+    for (std::size_t k = 0; k < rows_.size(); ++k) {
+      V.row(rows_[k]) = positions_[k].transpose();
+      if (normals_) N.row(rows_[k]) = normals_v_[k].transpose();
+    }
+    if (V.rows() != vertices_) V.conservativeResize(vertices_, 3);
+    if (normals_ && N.rows() != vertices_) N.conservativeResize(vertices_, 3);
+    if (!F) return;
+    for (std::size_t k = 0; k < face_rows_.size(); ++k)
+      F->row(face_rows_[k]) << face_corners_[k][0], face_corners_[k][1], face_corners_[k][2];
+    if (F->rows() != faces_) F->conservativeResize(faces_, 3);
+  }
+
+  int vertices_, faces_;
+  bool normals_;
+  std::vector<char> vertex_seen_, face_seen_;  ///< per vertex and face of the mesh before
+  std::vector<int> rows_;
+  std::vector<Eigen::Vector3d> positions_, normals_v_;
+  std::vector<int> face_rows_;
+  std::vector<std::array<int, 3>> face_corners_;
+  std::unique_ptr<geometry::Mesh> whole_;
+  Eigen::MatrixX3d whole_N_;
 };
 
-/// Applies sub-step k to the points in reach; the message of the first failure, or empty.
-std::string substep_points(const detail::HalfStep& forward, const detail::HalfStep& backward,
-                           const Eigen::AlignedBox3d& reach, Eigen::MatrixX3d& V, Eigen::MatrixX3d& N, double& least,
-                           UndoLog& undo) {
+/// The points in `reach`, ascending: from the index, or by a scan of every point.
+std::vector<int> points_in(const Eigen::AlignedBox3d& reach, const Eigen::MatrixX3d& V, const MeshIndex* index) {
+  if (index) return index->vertices_in(reach, V);
   std::vector<int> in_reach;
   for (int i = 0; i < V.rows(); ++i)
     if (reach.contains(V.row(i).transpose())) in_reach.push_back(i);
+  return in_reach;
+}
+
+/// Applies sub-step k to the points in reach (the index, if any, kept up to date); the message
+/// of the first failure, or empty. Counts the points it moved in `moved`.
+std::string substep_points(const detail::HalfStep& forward, const detail::HalfStep& backward,
+                           const Eigen::AlignedBox3d& reach, Eigen::MatrixX3d& V, Eigen::MatrixX3d& N, double& least,
+                           MeshIndex* index, StrokeUndo& undo, int& moved) {
+  const std::vector<int> in_reach = points_in(reach, V, index);
   const int n = static_cast<int>(in_reach.size());
   std::vector<SubstepPoint> out(n);
   const bool normals = N.rows() == V.rows();
@@ -151,23 +206,27 @@ std::string substep_points(const detail::HalfStep& forward, const detail::HalfSt
     if (!(out[k].determinant > 0)) return fmt::format("Jacobian determinant {:.3g} at vertex {}", out[k].determinant, i);
   }
   for (int k = 0; k < n; ++k) {
-    undo.record(in_reach[k], V, N);
-    V.row(in_reach[k]) = out[k].position.transpose();
-    if (normals) N.row(in_reach[k]) = out[k].normal.transpose();
+    const int i = in_reach[k];
+    const Eigen::Vector3d before = V.row(i).transpose();
+    if (out[k].position == before && (!normals || N.row(i).transpose() == out[k].normal)) continue;
+    undo.record_vertex(i, before, normals ? Eigen::Vector3d(N.row(i)) : Eigen::Vector3d::Zero());
+    moved += out[k].position != before;
+    V.row(i) = out[k].position.transpose();
+    if (normals) N.row(i) = out[k].normal.transpose();
+    if (index) index->move_vertex(i, before, out[k].position);
   }
   return {};
 }
 
-}  // namespace
-
-StrokeResult deform_points(const std::vector<MovingTool>& tools, const StrokeOptions& options, Eigen::MatrixX3d& V,
-                           Eigen::MatrixX3d& N) {
+/// `deform_points`, the points found by `index` (null: a scan), every change logged in `undo`;
+/// a refused stroke is left half done (the caller puts it back). `vertices_moved` sums the
+/// points each sub-step moved.
+StrokeResult deform(const std::vector<MovingTool>& tools, const StrokeOptions& options, Eigen::MatrixX3d& V,
+                    Eigen::MatrixX3d& N, MeshIndex* index, StrokeUndo& undo) {
   assert(!tools.empty());
   assert(N.rows() == 0 || N.rows() == V.rows());
   StrokeResult result;
   result.substeps = count_substeps(tools, options, result.foldover_bound);
-  UndoLog undo;
-  undo.touched.assign(V.rows(), 0);
   const double h = 1.0 / result.substeps;
   Placement start = place(tools, options.mirror, 0.0);
   for (int k = 0; k < result.substeps; ++k) {
@@ -177,25 +236,58 @@ StrokeResult deform_points(const std::vector<MovingTool>& tools, const StrokeOpt
     Eigen::AlignedBox3d reach = start.reach;
     reach.extend(end.reach);
     std::string failure = check_grid(*forward, *backward, reach, options.grid, result.min_jacobian_determinant);
-    if (failure.empty()) failure = substep_points(*forward, *backward, reach, V, N, result.min_jacobian_determinant, undo);
+    if (failure.empty())
+      failure = substep_points(*forward, *backward, reach, V, N, result.min_jacobian_determinant, index, undo,
+                               result.vertices_moved);
     if (!failure.empty()) {
-      undo.restore(V, N);
       result.refusal = fmt::format("the stroke folds space over at sub-step {} of {}: {}", k + 1, result.substeps, failure);
       return result;
     }
     start = end;
   }
-  result.vertices_moved = undo.moved(V);
   result.tools = std::move(start.tools);
   result.applied = true;
   return result;
 }
 
+}  // namespace
+
+StrokeResult deform_points(const std::vector<MovingTool>& tools, const StrokeOptions& options, Eigen::MatrixX3d& V,
+                           Eigen::MatrixX3d& N) {
+  StrokeUndo undo(V, nullptr, N);
+  StrokeResult result = deform(tools, options, V, N, nullptr, undo);
+  if (!result.applied) undo.restore(V, nullptr, N);
+  result.vertices_moved = undo.moved(V);
+  return result;
+}
+
 namespace {
+
+/// Logs what a remesh changed and keeps the index up to date with it; a compaction (after
+/// collapses) keeps the mesh as it was in the log and indexes the compacted mesh anew.
+void apply_remesh_changes(const detail::RemeshChanges& changes, geometry::Mesh& mesh, Eigen::MatrixX3d& N,
+                          MeshIndex& index, StrokeUndo& undo) {
+  const bool normals = N.rows() == mesh.V.rows();
+  for (std::size_t k = 0; k < changes.moved.size(); ++k)
+    undo.record_vertex(changes.moved[k], changes.moved_from[k], normals ? changes.moved_normal_from[k] : Eigen::Vector3d());
+  for (std::size_t k = 0; k < changes.faces.size(); ++k)
+    if (changes.before[k][0] >= 0) undo.record_face(changes.faces[k], changes.before[k]);
+  if (!changes.removed_faces.empty()) {
+    undo.keep_whole(mesh, N);
+    detail::compact(changes.removed_faces, mesh, N);
+    index = MeshIndex(mesh, index.cell());
+    return;
+  }
+  for (int v = changes.old_vertices; v < mesh.vertex_count(); ++v) index.add_vertex(mesh.V.row(v).transpose());
+  for (std::size_t k = 0; k < changes.faces.size(); ++k) {
+    const int f = changes.faces[k];
+    index.change_face(f, changes.before[k], {mesh.F(f, 0), mesh.F(f, 1), mesh.F(f, 2)});
+  }
+}
 
 /// The stroke one sub-step at a time, the mesh remeshed in each sub-step's reach after it.
 StrokeResult deform_and_remesh(const std::vector<MovingTool>& tools, const StrokeOptions& options, geometry::Mesh& mesh,
-                               Eigen::MatrixX3d& N) {
+                               Eigen::MatrixX3d& N, MeshIndex& index, StrokeUndo& undo) {
   StrokeResult result;
   result.substeps = count_substeps(tools, options, result.foldover_bound);
   StrokeOptions one = options;
@@ -203,7 +295,7 @@ StrokeResult deform_and_remesh(const std::vector<MovingTool>& tools, const Strok
   std::vector<MovingTool> step = tools;
   for (std::size_t j = 0; j < tools.size(); ++j) step[j].motion = tools[j].motion.fraction(1.0 / result.substeps);
   for (int k = 0; k < result.substeps; ++k) {
-    const StrokeResult sub = deform_points(step, one, mesh.V, N);
+    const StrokeResult sub = deform(step, one, mesh.V, N, &index, undo);
     result.min_jacobian_determinant = std::min(result.min_jacobian_determinant, sub.min_jacobian_determinant);
     if (!sub.applied) {
       result.refusal = fmt::format("the stroke folds space over at sub-step {} of {}: {}", k + 1, result.substeps,
@@ -214,7 +306,9 @@ StrokeResult deform_and_remesh(const std::vector<MovingTool>& tools, const Strok
     Eigen::AlignedBox3d reach = place(step, options.mirror, 0.0).reach;
     for (std::size_t j = 0; j < step.size(); ++j) step[j].tool = sub.tools[j];
     reach.extend(place(step, options.mirror, 0.0).reach);
-    const RemeshResult remeshed = remesh_in_box(reach, options.remesh, mesh, N);
+    detail::RemeshChanges changes;
+    const RemeshResult remeshed = detail::remesh(reach, options.remesh, &index, mesh, N, changes);
+    apply_remesh_changes(changes, mesh, N, index, undo);
     result.splits += remeshed.splits;
     result.collapses += remeshed.collapses;
   }
@@ -226,25 +320,44 @@ StrokeResult deform_and_remesh(const std::vector<MovingTool>& tools, const Strok
 }  // namespace
 
 StrokeResult sculpt_mesh(const std::vector<MovingTool>& tools, const StrokeOptions& options, geometry::Mesh& mesh,
-                         Eigen::MatrixX3d& N) {
-  geometry::Mesh deformed = mesh;
-  Eigen::MatrixX3d normals = N;
-  StrokeResult result = options.remesh.max_edge > 0 ? deform_and_remesh(tools, options, deformed, normals)
-                                                    : deform_points(tools, options, deformed.V, normals);
+                         Eigen::MatrixX3d& N, MeshIndex& index) {
+  if (index.vertex_count() != mesh.vertex_count() || index.face_count() != mesh.face_count())
+    index = MeshIndex(mesh, index.cell());
+  StrokeUndo undo(mesh.V, &mesh.F, N);
+  StrokeResult result = options.remesh.max_edge > 0 ? deform_and_remesh(tools, options, mesh, N, index, undo)
+                                                    : deform(tools, options, mesh.V, N, &index, undo);
+  if (options.remesh.max_edge <= 0) result.vertices_moved = undo.moved(mesh.V);
   const bool changed = result.vertices_moved > 0 || result.splits > 0 || result.collapses > 0;
+  bool restored = false;
   if (result.applied && options.check_self_intersections && changed) {
-    const geometry::SelfIntersections after = geometry::find_self_intersections(deformed, 1);
-    if (!after.pairs.empty() && !geometry::find_self_intersections(mesh, 0).truncated) {
-      result.applied = false;
-      result.refusal = fmt::format("the stroke makes the mesh self-intersect (faces {} and {})", after.pairs[0].first,
-                                   after.pairs[0].second);
+    const geometry::SelfIntersections after = geometry::find_self_intersections(mesh, 1);
+    if (!after.pairs.empty()) {  // refused unless the mesh self-intersected before the stroke
+      geometry::Mesh deformed = mesh;
+      Eigen::MatrixX3d deformed_N = N;
+      undo.restore(mesh.V, &mesh.F, N);
+      restored = true;
+      if (!geometry::find_self_intersections(mesh, 0).truncated) {
+        result.applied = false;
+        result.refusal = fmt::format("the stroke makes the mesh self-intersect (faces {} and {})", after.pairs[0].first,
+                                     after.pairs[0].second);
+      } else {
+        mesh = std::move(deformed);
+        N = std::move(deformed_N);
+        restored = false;
+      }
     }
   }
-  if (result.applied) {
-    mesh = std::move(deformed);
-    N = std::move(normals);
+  if (!result.applied) {
+    if (!restored) undo.restore(mesh.V, &mesh.F, N);
+    index = MeshIndex(mesh, index.cell());
   }
   return result;
+}
+
+StrokeResult sculpt_mesh(const std::vector<MovingTool>& tools, const StrokeOptions& options, geometry::Mesh& mesh,
+                         Eigen::MatrixX3d& N) {
+  MeshIndex index(mesh);
+  return sculpt_mesh(tools, options, mesh, N, index);
 }
 
 }  // namespace reconfig::sculpt

@@ -283,6 +283,50 @@ TEST(SculptStroke, AStrokeThatMakesTheMeshSelfIntersectIsRefused) {
   EXPECT_TRUE(mesh.V == before.V);
 }
 
+/// A slab and, above it, a small finely meshed ball (edges of about 0.016).
+geometry::Mesh slab_and_ball() {
+  geometry::Mesh mesh = geometry::make_box({2, 2, 0.2});
+  const geometry::Mesh ball = geometry::make_sphere(0.06, 2);
+  const int n = mesh.vertex_count();
+  mesh.V.conservativeResize(n + ball.vertex_count(), 3);
+  mesh.V.bottomRows(ball.vertex_count()) = ball.V.rowwise() + Eigen::RowVector3d(0, 0, 0.3);
+  mesh.F.conservativeResize(mesh.face_count() + ball.face_count(), 3);
+  mesh.F.bottomRows(ball.face_count()) = ball.F.array() + n;
+  return mesh;
+}
+
+TEST(SculptStroke, ARefusedStrokeLeavesTheMeshBitForBitAsItWas) {
+  // The ball pushed into the slab in two sub-steps, remeshed after each (splits; collapses
+  // renumber the mesh): the self-intersection refuses the stroke at its end and the undo log
+  // puts everything back.
+  const MovingTool push{Tool::sphere(0.15, {0, 0, 0.3}, 0.3), ToolMotion::translation({0, 0, -0.2})};
+  for (const RemeshOptions remesh : {RemeshOptions{}, RemeshOptions{0.012, 0}, RemeshOptions{0.05, 0.02}}) {
+    geometry::Mesh mesh = slab_and_ball();
+    ASSERT_TRUE(geometry::find_self_intersections(mesh, 1).pairs.empty());
+    Eigen::MatrixX3d N = vertex_normals(mesh);
+    const geometry::Mesh before = mesh;
+    const Eigen::MatrixX3d normals_before = N;
+    StrokeOptions options;
+    options.remesh = remesh;
+    MeshIndex index(mesh);
+    const StrokeResult result = sculpt_mesh({push}, options, mesh, N, index);
+    ASSERT_FALSE(result.applied);
+    EXPECT_NE(result.refusal.find("self-intersect"), std::string::npos) << result.refusal;
+    EXPECT_EQ(result.substeps, 2);
+    if (remesh.max_edge == 0.012) {
+      EXPECT_GT(result.splits, 0);
+    }
+    if (remesh.min_edge > 0) {
+      EXPECT_GT(result.collapses, 0);
+    }
+    EXPECT_TRUE(mesh.V == before.V);
+    EXPECT_TRUE(mesh.F == before.F);
+    EXPECT_TRUE(N == normals_before);
+    EXPECT_EQ(index.vertex_count(), mesh.vertex_count());
+    EXPECT_EQ(index.face_count(), mesh.face_count());
+  }
+}
+
 TEST(SculptStroke, AMirroredStrokeIsSymmetric) {
   geometry::Mesh mesh = geometry::make_sphere(1.0, 3);  // symmetric in x = 0
   std::vector<int> mirror(mesh.vertex_count(), -1);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "reconfig/geometry/mesh.h"
+#include "reconfig/sculpt/mesh_index.h"
 #include "reconfig/sculpt/remesh_in_box.h"
 #include "reconfig/sculpt/substep_count.h"
 
@@ -74,7 +75,8 @@ StrokeResult deform_points(const std::vector<MovingTool>& tools, const StrokeOpt
 
 /// `deform_points` on a mesh's vertices, then (if `check_self_intersections`) the exact
 /// self-intersection test of the deformed mesh (geometry/self_intersections.h): a stroke that
-/// makes the mesh self-intersect is refused and the mesh left as it was. With remeshing, each
+/// makes the mesh self-intersect is refused and the mesh left as it was (bit for bit: the
+/// stroke works in place and logs what it changes, to put it back). With remeshing, each
 /// sub-step is deformed on its own (the same sub-steps: tools at k/s and (k+1)/s) and followed
 /// by `remesh_in_box` over the sub-step's reach; `vertices_moved` then counts the vertices
 /// moved by the sub-steps, summed.
@@ -84,5 +86,12 @@ StrokeResult deform_points(const std::vector<MovingTool>& tools, const StrokeOpt
 /// @param N        #V×3 unit vertex normals, deformed in place, or empty
 StrokeResult sculpt_mesh(const std::vector<MovingTool>& tools, const StrokeOptions& options, geometry::Mesh& mesh,
                          Eigen::MatrixX3d& N);
+
+/// `sculpt_mesh` with the mesh's spatial index kept by the caller from stroke to stroke (a
+/// drag): each sub-step and remesh touches only the vertices and faces in its reach, and the
+/// index follows them (built anew after collapses renumber the mesh, or a refusal).
+/// @param index  of `mesh` (rebuilt first if its vertex or face count differs from the mesh's)
+StrokeResult sculpt_mesh(const std::vector<MovingTool>& tools, const StrokeOptions& options, geometry::Mesh& mesh,
+                         Eigen::MatrixX3d& N, MeshIndex& index);
 
 }  // namespace reconfig::sculpt

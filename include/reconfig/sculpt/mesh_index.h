@@ -1,0 +1,54 @@
+#pragma once
+/// @file
+/// The spatial index a mesh keeps while it is sculpted (Sweepers §5.1: only what a tool's box
+/// holds is touched): its vertices bucketed in a uniform grid, and the faces around each
+/// vertex. Strokes (`sculpt_mesh`) keep it up to date as they move, add and remove vertices.
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <array>
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+#include "reconfig/geometry/mesh.h"
+
+namespace reconfig::sculpt {
+
+class MeshIndex {
+ public:
+  MeshIndex() = default;
+  /// Indexes `mesh`. @param cell  the grid's cell edge (> 0), or 0: eight mean edge lengths
+  explicit MeshIndex(const geometry::Mesh& mesh, double cell = 0);
+
+  /// The vertices of V inside `box` (closed), in ascending order — those a scan of every
+  /// vertex would find. @param V  #V×3, the positions the index was kept up to date with
+  std::vector<int> vertices_in(const Eigen::AlignedBox3d& box, const Eigen::MatrixX3d& V) const;
+  /// The faces that use vertex v (in no particular order).
+  const std::vector<int>& faces_of(int v) const { return vertex_faces_[v]; }
+
+  /// Vertex v moved from `from` to `to`.
+  void move_vertex(int v, const Eigen::Vector3d& from, const Eigen::Vector3d& to);
+  /// A new vertex (numbered `vertex_count()`) at p, used by no face yet.
+  void add_vertex(const Eigen::Vector3d& p);
+  /// Face f's corners changed from `before` to `after`; a new face f (= the face count so far)
+  /// has `before` = {−1, −1, −1}.
+  void change_face(int f, const std::array<int, 3>& before, const std::array<int, 3>& after);
+
+  int vertex_count() const { return static_cast<int>(vertex_faces_.size()); }
+  int face_count() const { return faces_; }
+  double cell() const { return cell_; }
+
+ private:
+  static std::int64_t key(const std::array<int, 3>& cell);
+  std::array<int, 3> cell_of(const Eigen::Vector3d& p) const;
+
+  double cell_ = 1;
+  std::unordered_map<std::int64_t, std::vector<int>> cells_;  ///< vertices by grid cell
+  std::array<int, 3> low_{0, 0, 0}, high_{-1, -1, -1};          ///< cells ever occupied span these
+  std::vector<std::vector<int>> vertex_faces_;
+  int faces_ = 0;
+};
+
+}  // namespace reconfig::sculpt

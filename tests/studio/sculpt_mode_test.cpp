@@ -1,0 +1,165 @@
+// The studio's sculpt mode driven through mouse events (headless): left-drags reshape the
+// bench-table's armrests until `unfold` is collision-free, each stroke one undoable edit; a
+// right-drag only places the tool; a refused move stops the stroke at its last good state.
+
+#include <gtest/gtest.h>
+
+#include <fmt/format.h>
+
+#include "bench_table_unfold.h"
+#include "reconfig/geometry/primitives.h"
+#include "reconfig/geometry/self_intersections.h"
+#include "reconfig/scene/edits.h"
+#include "script.h"
+
+namespace reconfig::studio {
+namespace {
+
+using std::chrono::milliseconds;
+
+class StudioSculptMode : public BenchTableUnfold {
+ protected:
+  /// The camera looks along −x (from the side), so drags along y and z stay in the view plane.
+  void look_from_the_side() {
+    studio().camera().yaw = 0;
+    studio().camera().pitch = 0;
+    frontend_->run_frame();
+  }
+  const geometry::Mesh& mesh_of(const char* name) { return scene().parts[part(name)].mesh; }
+  /// A drag of the tool by `d` in the part's rest frame, as a script line (world offset).
+  std::string drag_line(const Eigen::Vector3d& d, int steps = 8) {
+    const Eigen::Vector3d world = studio().selected_pose()->rotation * d;
+    return fmt::format("sculpt-drag {} {} {} steps {}\n", world.x(), world.y(), world.z(), steps);
+  }
+};
+
+TEST_F(StudioSculptMode, LeftDragsReshapeTheArmrestsUntilUnfoldIsCollisionFree) {
+  ASSERT_EQ(intervals_shown(), 2u);  // the backrest hits both armrests
+  look_from_the_side();
+  const geometry::Mesh right_before = mesh_of("armrest_right");
+  for (const char* armrest : {"armrest_left", "armrest_right"}) {
+    studio().select_part(part(armrest));
+    run_script(*frontend_, "sculpt-mode on\nsculpt-tool box 0.2 0.2 0.2 0.08\n", "sculpt mode");
+    studio().sculpt().settings().center = {0, -0.25, 0};  // beyond the armrest's back end
+    const std::uint64_t version = studio().document()->version();
+    run_script(*frontend_, drag_line({0, 0.14, 0}), "drag");
+    EXPECT_GT(studio().document()->version(), version);
+    EXPECT_FALSE(studio().sculpt().stroking());
+    EXPECT_NE(studio().status().find("sculpted " + std::string(armrest)), std::string::npos) << studio().status();
+    // The back end moved with the tool (to within a pixel: about 3 mm here).
+    EXPECT_NEAR(mesh_of(armrest).V.col(1).minCoeff(), -0.19 + 0.14, 4e-3);
+    EXPECT_TRUE(geometry::find_self_intersections(mesh_of(armrest), 1).pairs.empty());
+  }
+  run_script(*frontend_, "sculpt-mode off\n", "off");
+  ASSERT_TRUE(frontend_->run_until_collisions_current(milliseconds(60000)));
+  EXPECT_EQ(intervals_shown(), 0u);
+  // The whole drag of the right armrest (eight moves) is one undoable edit.
+  const geometry::Mesh left_sculpted = mesh_of("armrest_left");
+  ASSERT_TRUE(studio().undo());
+  EXPECT_EQ(mesh_of("armrest_right").V, right_before.V);
+  EXPECT_EQ(mesh_of("armrest_right").F, right_before.F);
+  EXPECT_EQ(mesh_of("armrest_left").V, left_sculpted.V);
+  ASSERT_TRUE(frontend_->run_until_collisions_current(milliseconds(60000)));
+  EXPECT_EQ(intervals_shown(), 1u);
+}
+
+TEST_F(StudioSculptMode, ARightDragPlacesTheToolOnTheSurfaceWithoutDeforming) {
+  look_from_the_side();
+  studio().select_part(part("armrest_left"));
+  run_script(*frontend_, "sculpt-mode on\nsculpt-tool sphere 0.03 0 0 0.03\n", "sculpt mode");
+  const geometry::Mesh before = mesh_of("armrest_left");
+  const std::uint64_t version = studio().document()->version();
+  // A point of the armrest's +x side (it faces the camera), in the world.
+  const motion::Pose pose = *studio().selected_pose();
+  const Eigen::Vector3d rest(0.025, 0.05, 0.01);
+  const Eigen::Vector3d world = pose.apply(scene().parts[part("armrest_left")].center, rest);
+  run_script(*frontend_, fmt::format("sculpt-place {} {} {}\n", world.x(), world.y(), world.z()), "place");
+  EXPECT_EQ(studio().document()->version(), version);
+  EXPECT_EQ(mesh_of("armrest_left").V, before.V);
+  const Eigen::Vector3d center = studio().sculpt().settings().center;
+  EXPECT_NEAR(center.x(), rest.x(), 1e-9);  // on the side face
+  EXPECT_LT((center - rest).norm(), 5e-3) << center.transpose();  // where the mouse was, to a pixel
+}
+
+/// A slab and, above it, a small ball: pushed into the slab, the ball's vertices pass through
+/// the slab's top face, whose corners are beyond the tool's reach (it does not bend).
+geometry::Mesh slab_and_ball() {
+  geometry::Mesh mesh = geometry::make_box({0.5, 0.5, 0.05});
+  const geometry::Mesh ball = geometry::make_sphere(0.015, 2);
+  const int n = mesh.vertex_count();
+  mesh.V.conservativeResize(n + ball.vertex_count(), 3);
+  mesh.V.bottomRows(ball.vertex_count()) = ball.V.rowwise() + Eigen::RowVector3d(0, 0, 0.075);
+  mesh.F.conservativeResize(mesh.face_count() + ball.face_count(), 3);
+  mesh.F.bottomRows(ball.face_count()) = ball.F.array() + n;
+  return mesh;
+}
+
+TEST_F(StudioSculptMode, ARefusedMoveStopsTheStrokeAtItsLastGoodState) {
+  look_from_the_side();
+  ASSERT_TRUE(studio().execute(scene::replace_part_mesh("armrest_left", slab_and_ball())));
+  const geometry::Mesh before = mesh_of("armrest_left");
+  ASSERT_TRUE(geometry::find_self_intersections(before, 1).pairs.empty());
+  studio().select_part(part("armrest_left"));
+  run_script(*frontend_, "sculpt-mode on\nsculpt-tool sphere 0.04 0 0 0.075\n", "sculpt mode");
+  studio().sculpt().settings().center = {0, 0, 0.075};  // on the ball
+  // One move straight into the slab: refused, nothing changes.
+  std::uint64_t version = studio().document()->version();
+  run_script(*frontend_, drag_line({0, 0, -0.05}, 1), "one move");
+  EXPECT_NE(studio().status().find("refused"), std::string::npos) << studio().status();
+  EXPECT_EQ(studio().document()->version(), version);
+  EXPECT_EQ(mesh_of("armrest_left").V, before.V);
+  EXPECT_EQ(mesh_of("armrest_left").F, before.F);
+  // Ten moves: the first ones bring the ball down, the one into the slab is refused and the
+  // stroke stops there, as one undoable edit.
+  version = studio().document()->version();
+  run_script(*frontend_, drag_line({0, 0, -0.05}, 10), "ten moves");
+  EXPECT_NE(studio().status().find("refused"), std::string::npos) << studio().status();
+  EXPECT_GT(studio().document()->version(), version);
+  const geometry::Mesh& stopped = mesh_of("armrest_left");
+  EXPECT_LT(stopped.V.col(2).minCoeff() - before.V.col(2).minCoeff(), 1e-12);  // the slab did not move
+  const int ball = geometry::make_sphere(0.015, 2).vertex_count();  // the last vertices (no remeshing)
+  EXPECT_LT(stopped.V.bottomRows(ball).col(2).minCoeff(), before.V.bottomRows(ball).col(2).minCoeff() - 0.01);  // the ball did
+  EXPECT_TRUE(geometry::find_self_intersections(stopped, 1).pairs.empty());
+  ASSERT_TRUE(studio().undo());
+  EXPECT_EQ(mesh_of("armrest_left").V, before.V);
+  EXPECT_EQ(mesh_of("armrest_left").F, before.F);
+}
+
+TEST_F(StudioSculptMode, APartBakedAsTheToolSculptsWhereItIs) {
+  // At t = 0.4 the backrest passes through the left armrest: baked as the tool, it carries the
+  // armrest's vertices inside it along when dragged.
+  studio().set_time(0.4);
+  look_from_the_side();
+  studio().select_part(part("armrest_left"));
+  run_script(*frontend_, "sculpt-mode on\nsculpt-tool part backrest 0.02\n", "baked tool");
+  const geometry::Mesh before = mesh_of("armrest_left");
+  run_script(*frontend_, drag_line({0, 0, 0.01}, 4), "drag the backrest");
+  EXPECT_NE(studio().status().find("sculpted armrest_left"), std::string::npos) << studio().status();
+  EXPECT_NE(mesh_of("armrest_left").V, before.V);
+  EXPECT_TRUE(geometry::find_self_intersections(mesh_of("armrest_left"), 1).pairs.empty());
+  // The tool cannot be the part it sculpts.
+  run_script(*frontend_, "sculpt-tool part armrest_left 0.02\n", "itself");
+  EXPECT_FALSE(studio().sculpt().tool_center(studio()));  // no tool to draw or drag
+  EXPECT_THROW(run_script(*frontend_, drag_line({0, 0, 0.01}, 4), "drag itself"), ScriptError);
+  EXPECT_FALSE(studio().sculpt_selected_part());
+  EXPECT_NE(studio().status().find("another part"), std::string::npos) << studio().status();
+}
+
+TEST_F(StudioSculptMode, KTogglesTheModeAndTheWheelScalesTheTool) {
+  look_from_the_side();
+  run_script(*frontend_, "key k\n", "no part");
+  EXPECT_FALSE(studio().sculpt().mode());  // refused: no part selected
+  studio().select_part(part("armrest_left"));
+  run_script(*frontend_, "key k\nsculpt-tool sphere 0.03 0 0 0.05\n", "k");
+  ASSERT_TRUE(studio().sculpt().mode());
+  studio().sculpt().settings().center = {0, 0.19, 0};  // the armrest's front end
+  run_script(*frontend_, drag_line({0, 0.01, 0}), "drag");
+  const double before = studio().sculpt().settings().size.x();
+  run_script(*frontend_, "sculpt-drag 0 0 0.001 wheel 2\n", "wheel");
+  EXPECT_NEAR(studio().sculpt().settings().size.x(), before * 1.21, 1e-9);
+  run_script(*frontend_, "key k\n", "k off");
+  EXPECT_FALSE(studio().sculpt().mode());
+}
+
+}  // namespace
+}  // namespace reconfig::studio
