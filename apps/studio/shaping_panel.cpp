@@ -215,8 +215,8 @@ void ShapingPanel::add_preview_to_draw_list(const Studio& studio, render::DrawLi
   render::MeshItem item;
   item.V = ((pose.linear() * mesh->V.transpose()).colwise() + pose.translation()).transpose();
   item.F = mesh->F;
-  item.color = {0.95f, 0.5f, 0.1f};
-  item.opacity = 0.35f;
+  item.color = {0.7f, 0.2f, 0.95f};  // violet: apart from the selection's orange
+  item.opacity = 0.45f;
   list.meshes.push_back(std::move(item));
 }
 
@@ -245,7 +245,7 @@ void ShapingPanel::draw_preview_status(const Studio& studio) {
       preview_.clear();
     }
   } else if (const auto mesh = carve_preview(studio)) {
-    ImGui::Text("Preview: the swept volume in orange (%d triangles)", int(mesh->face_count()));
+    ImGui::Text("Preview: the swept volume in violet (%d triangles)", int(mesh->face_count()));
   } else if (preview_stopped_) {
     ImGui::TextUnformatted("Preview stopped (change a setting to sweep again)");
   }
