@@ -87,7 +87,7 @@ TEST_F(StudioShaping, TheCarveWindowPresetsTheCollidingParts) {
 /// at sampled times, recomputed when the settings change, gone when the window closes.
 TEST_F(StudioShaping, TheCarveWindowPreviewsTheSweptVolumeInsideThePart) {
   const int backrest = part("backrest"), armrest = part("armrest_left");
-  run_script(*frontend_, "carve-window backrest by armrest_left offset 0.005\n"
+  run_script(*frontend_, "carve-window backrest by armrest_left offset 0.005 grid 0.006\n"
                          "expect-carve-preview none\n"  // still sweeping
                          "wait-carve-preview 60\n"
                          "expect-carve-preview\n", "preview.script");
@@ -116,7 +116,7 @@ TEST_F(StudioShaping, TheCarveWindowPreviewsTheSweptVolumeInsideThePart) {
   // The viewport draws it (placed with the backrest): one more translucent mesh.
   EXPECT_NE(studio().shaping().overlay_revision(), 0u);
   // Both armrests: a new preview, holding the first.
-  run_script(*frontend_, "carve-window backrest by armrest_left,armrest_right offset 0.005\n"
+  run_script(*frontend_, "carve-window backrest by armrest_left,armrest_right offset 0.005 grid 0.006\n"
                          "wait-carve-preview 60\n", "both.script");
   const auto both = studio().shaping().carve_preview(studio());
   ASSERT_TRUE(both);
