@@ -69,6 +69,7 @@ nlohmann::ordered_json sweep_json(const sweep::SweptVolumeResult& result) {
   return {{"grid_step", result.grid_step},       {"grid_size", result.grid_size},
           {"time_samples", result.time_samples}, {"motion_error", result.motion_error},
           {"level", result.level},               {"margin", result.margin},
+          {"verified", result.verified},
           {"band_voxels", result.active_voxels}, {"filled_cavities", result.filled_cavities},
           {"triangles", result.mesh.face_count()}, {"volume", geometry::mass_properties(result.mesh).volume}};
 }

@@ -137,6 +137,46 @@ void ShapingPanel::show_carve_window(Studio& studio) {
     carver_checks_[p] = std::find(settings.carvers.begin(), settings.carvers.end(), parts[p].name) != settings.carvers.end();
 }
 
+bool ShapingPanel::set_carve_window(Studio& studio, const CarveSettings& settings) {
+  if (!carve_draft_ || !studio.document()) {
+    studio.set_status("carve: the Carve window is not open", true);
+    return false;
+  }
+  const scene::Reconfigurable& scene = studio.document()->scene();
+  std::vector<char> checks(scene.parts.size(), 0);
+  for (const std::string& name : settings.carvers) {
+    const int carver = scene.find_part(name);
+    if (carver < 0) {
+      studio.set_status(fmt::format("carve: no part \"{}\"", name), true);
+      return false;
+    }
+    checks[std::size_t(carver)] = 1;
+  }
+  carver_checks_ = std::move(checks);
+  carve_draft_ = settings;
+  return true;
+}
+
+std::optional<CarvePreview::Key> ShapingPanel::preview_key(const Studio& studio) const {
+  const Document* document = studio.document();
+  if (!carve_draft_ || !document || studio.selected_part() < 0 || studio.active_transition() < 0) return std::nullopt;
+  CarvePreview::Key key;
+  key.version = document->version();
+  key.transition = studio.active_transition();
+  key.part = studio.selected_part();
+  for (std::size_t p = 0; p < carver_checks_.size(); ++p)
+    if (carver_checks_[p] && int(p) != key.part) key.carvers.push_back(int(p));
+  key.offset = std::max(0.0, carve_draft_->offset);
+  key.grid = std::max(0.0, carve_draft_->grid);
+  return key;
+}
+
+std::shared_ptr<const geometry::Mesh> ShapingPanel::carve_preview(const Studio& studio) const {
+  const std::optional<CarvePreview::Key> key = preview_key(studio);
+  if (!key || preview_.shown() != key) return nullptr;
+  return preview_.mesh();
+}
+
 std::shared_ptr<const geometry::Mesh> ShapingPanel::envelope(const Studio& studio) {
   const Document* document = studio.document();
   if (!envelope_shown_ || !document || studio.selected_part() < 0 || studio.active_transition() < 0) return nullptr;
@@ -153,6 +193,7 @@ std::shared_ptr<const geometry::Mesh> ShapingPanel::envelope(const Studio& studi
 }
 
 void ShapingPanel::add_to_draw_list(const Studio& studio, render::DrawList& list) {
+  add_preview_to_draw_list(studio, list);
   const std::shared_ptr<const geometry::Mesh> mesh = envelope(studio);
   if (!mesh || mesh->empty()) return;
   render::MeshItem item;
@@ -163,9 +204,51 @@ void ShapingPanel::add_to_draw_list(const Studio& studio, render::DrawList& list
   list.meshes.push_back(std::move(item));
 }
 
+void ShapingPanel::add_preview_to_draw_list(const Studio& studio, render::DrawList& list) const {
+  const std::shared_ptr<const geometry::Mesh> mesh = carve_preview(studio);
+  if (!mesh || mesh->empty()) return;
+  // Placed with the carved part where it is now.
+  const scene::Reconfigurable& scene = studio.document()->scene();
+  const int part = studio.selected_part();
+  const Eigen::Isometry3d pose =
+      scene.pose_at(studio.active_transition(), part, studio.time()).to_isometry(scene.parts[part].center);
+  render::MeshItem item;
+  item.V = ((pose.linear() * mesh->V.transpose()).colwise() + pose.translation()).transpose();
+  item.F = mesh->F;
+  item.color = {0.7f, 0.2f, 0.95f};  // violet: apart from the selection's orange
+  item.opacity = 0.45f;
+  list.meshes.push_back(std::move(item));
+}
+
 void ShapingPanel::update(Studio& studio) {
   if (job_ && job_->result.wait_for(std::chrono::seconds(0)) == std::future_status::ready)
     finish_carve(studio, job_->result.get());
+  // The Carve window's preview follows its settings and the design; gone with the window.
+  preview_.update();
+  const std::optional<CarvePreview::Key> key = preview_key(studio);
+  if (!key || job_) {
+    preview_.clear();
+    preview_stopped_.reset();
+  } else if (key != preview_stopped_) {
+    preview_stopped_.reset();
+    preview_.request(studio.document()->shared_scene(), *key);
+  }
+}
+
+void ShapingPanel::draw_preview_status(const Studio& studio) {
+  if (preview_.computing()) {
+    ImGui::TextUnformatted("Preview: sweeping...");
+    ImGui::ProgressBar(float(preview_.progress()), {-80, 0});
+    ImGui::SameLine();
+    if (ImGui::Button("Stop##preview")) {
+      preview_stopped_ = preview_key(studio);
+      preview_.clear();
+    }
+  } else if (const auto mesh = carve_preview(studio)) {
+    ImGui::Text("Preview: the swept volume in violet (%d triangles)", int(mesh->face_count()));
+  } else if (preview_stopped_) {
+    ImGui::TextUnformatted("Preview stopped (change a setting to sweep again)");
+  }
 }
 
 void ShapingPanel::draw(Studio& studio) {
@@ -196,6 +279,7 @@ void ShapingPanel::draw(Studio& studio) {
     }
     ImGui::InputDouble("offset", &carve_draft_->offset, 0, 0, "%.4f");
     ImGui::InputDouble("grid step (0: auto)", &carve_draft_->grid, 0, 0, "%.4f");
+    draw_preview_status(studio);
     if (ImGui::Button("Carve") && !job_) {
       carve_draft_->carvers.clear();
       for (std::size_t p = 0; p < parts.size(); ++p)

@@ -5,7 +5,9 @@
 /// transition (reconfigurables §6.7: A ← A \ offset(sweep(B), ε)), in the background with
 /// progress and cancel, as one undoable edit of its mesh; View > Swept envelope shows the screw
 /// envelope (Rossignac & Kim) of the selected part over the open transition, translucent, and
-/// follows every edit. Its own state, drawn by `draw` (like pip_panel.h).
+/// follows every edit. While the Carve window is open, the volume its carvers sweep through the
+/// part is previewed translucent on the part (carve_preview.h). Its own state, drawn by `draw`
+/// (like pip_panel.h).
 
 #include <atomic>
 #include <cstdint>
@@ -19,6 +21,7 @@
 #include "reconfig/render/draw_list.h"
 #include "reconfig/scene/reconfigurable.h"
 #include "reconfig/sweep/carve_part.h"
+#include "carve_preview.h"
 
 namespace reconfig::studio {
 
@@ -48,6 +51,16 @@ class ShapingPanel {
   void show_carve_window(Studio& studio);
   /// The Carve window's settings while it is open.
   const std::optional<CarveSettings>& carve_window() const { return carve_draft_; }
+  /// Sets the open Carve window's carvers (checks), offset and grid, as if typed in.
+  /// @return false (the status line says why) when the window is closed or a carver unknown
+  bool set_carve_window(Studio& studio, const CarveSettings& settings);
+  /// The open Carve window's preview: the carvers' swept volumes (offset, clipped to the part's
+  /// box) in the carved part's rest frame, once computed for the window's current settings
+  /// and the current design (null before, and when the window is closed).
+  std::shared_ptr<const geometry::Mesh> carve_preview(const Studio& studio) const;
+  bool carve_preview_computing() const { return preview_.computing(); }
+  /// Changes whenever what this panel adds to the viewport does (the preview arrives or goes).
+  std::uint64_t overlay_revision() const { return preview_.revision() + (envelope_shown_ ? 1ull << 63 : 0); }
 
   /// The translucent swept envelope of the selected part over the open transition.
   void set_envelope_shown(bool shown) { envelope_shown_ = shown; }
@@ -71,10 +84,16 @@ class ShapingPanel {
     std::future<sweep::CarveResult> result;
   };
   void finish_carve(Studio& studio, sweep::CarveResult result);
+  /// The preview the open Carve window asks for (none when it is closed).
+  std::optional<CarvePreview::Key> preview_key(const Studio& studio) const;
+  void draw_preview_status(const Studio& studio);
+  void add_preview_to_draw_list(const Studio& studio, render::DrawList& list) const;
 
   std::unique_ptr<CarveJob> job_;
   std::optional<CarveSettings> carve_draft_;  ///< the Carve window, while it is open
   std::vector<char> carver_checks_;           ///< per part, in the Carve window
+  CarvePreview preview_;                      ///< of the Carve window's settings
+  std::optional<CarvePreview::Key> preview_stopped_;  ///< cancelled by the user: not restarted
 
   bool envelope_shown_ = false;
   struct EnvelopeKey {

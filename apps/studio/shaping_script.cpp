@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <sstream>
+#include <thread>
 
 #include "studio.h"
 
@@ -63,6 +64,49 @@ std::string carve(HeadlessFrontend& frontend, const std::vector<std::string>& ar
   return "";
 }
 
+/// carve-window PART [by B[,C…]] [offset E] [grid H]: Collisions > Carve… on PART, then its settings.
+std::string carve_window(HeadlessFrontend& frontend, const std::vector<std::string>& args) {
+  Studio& studio = frontend.studio();
+  if (!studio.document()) return "no design is open";
+  if (args.empty()) return "carve-window needs PART [by B[,C…]] [offset E] [grid H]";
+  const int part = studio.document()->scene().find_part(args[0]);
+  if (part < 0) return fmt::format("no part \"{}\"", args[0]);
+  studio.select_part(part);
+  studio.shaping().show_carve_window(studio);
+  if (!studio.shaping().carve_window()) return studio.status();
+  ShapingPanel::CarveSettings settings = *studio.shaping().carve_window();
+  for (std::size_t i = 1; i < args.size(); i += 2) {
+    if (i + 1 >= args.size()) return fmt::format("after \"{}\": a value", args[i]);
+    double value = 0;
+    if (args[i] == "by") settings.carvers = split_commas(args[i + 1]);
+    else if (!parse_number(args[i + 1], value)) return fmt::format("after \"{}\": a number", args[i]);
+    else if (args[i] == "offset") settings.offset = value;
+    else if (args[i] == "grid") settings.grid = value;
+    else return fmt::format("unknown carve-window option \"{}\" (by, offset, grid)", args[i]);
+  }
+  if (!studio.shaping().set_carve_window(studio, settings)) return studio.status();
+  frontend.run_frame();
+  return "";
+}
+
+/// wait-carve-preview [S]: frames until the Carve window's preview is shown (default 60 s).
+std::string wait_carve_preview(HeadlessFrontend& frontend, const std::vector<std::string>& args) {
+  Studio& studio = frontend.studio();
+  double timeout = 60;
+  if (args.size() > 1 || (args.size() == 1 && !parse_number(args[0], timeout))) return "wait-carve-preview [seconds]";
+  if (!studio.shaping().carve_window()) return "the Carve window is not open (carve-window PART)";
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(static_cast<long>(timeout * 1000));
+  while (!studio.shaping().carve_preview(studio)) {
+    if (std::chrono::steady_clock::now() > deadline) return fmt::format("no carve preview within {} s", timeout);
+    if (!studio.shaping().carve_preview_computing() && !studio.shaping().carve_window())
+      return "the Carve window closed";
+    frontend.run_frame();
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  frontend.run_frame();  // drawn
+  return "";
+}
+
 }  // namespace
 
 bool perform_shaping_action(HeadlessFrontend& frontend, const std::string& action, const std::vector<std::string>& args,
@@ -71,6 +115,17 @@ bool perform_shaping_action(HeadlessFrontend& frontend, const std::string& actio
   problem.clear();
   if (action == "carve") {
     problem = carve(frontend, args);
+  } else if (action == "carve-window") {
+    problem = carve_window(frontend, args);
+  } else if (action == "wait-carve-preview") {
+    problem = wait_carve_preview(frontend, args);
+  } else if (action == "expect-carve-preview") {
+    const bool none = !args.empty() && args[0] == "none";
+    const auto mesh = studio.shaping().carve_preview(studio);
+    const bool shown = mesh && !mesh->empty();
+    if (shown == none)
+      problem = shown ? fmt::format("expected no carve preview, {} triangles are drawn", mesh->face_count())
+                      : "expected the Carve window's swept-volume preview drawn";
   } else if (action == "envelope") {
     if (args.size() != 1 || (args[0] != "on" && args[0] != "off")) problem = "envelope on|off";
     else studio.shaping().set_envelope_shown(args[0] == "on");

@@ -347,6 +347,7 @@ class Studio {
     bool detailed = true;  ///< full meshes (false: the coarse ones drawn while things move)
     std::array<std::int64_t, 2> hint{-1, 0};  ///< the hint's part and design version (arrows)
     bool envelope = false;                     ///< the swept envelope is shown
+    std::uint64_t shaping = 0;                 ///< ShapingPanel::overlay_revision()
     bool operator==(const ViewportInputs& other) const;
   };
   std::optional<ViewportInputs> last_viewport_inputs_;

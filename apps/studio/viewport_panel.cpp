@@ -64,11 +64,11 @@ void Studio::draw_viewport() {
 
 bool Studio::ViewportInputs::operator==(const ViewportInputs& other) const {
   return std::tie(document, version, snapshot, transition, state, time, selected, width, height, camera, preview,
-                  ghosts, ghost_count, ghost_spacing, intervals, detailed, hint, envelope) ==
+                  ghosts, ghost_count, ghost_spacing, intervals, detailed, hint, envelope, shaping) ==
          std::tie(other.document, other.version, other.snapshot, other.transition, other.state, other.time,
                   other.selected, other.width, other.height, other.camera, other.preview, other.ghosts,
                   other.ghost_count, other.ghost_spacing, other.intervals, other.detailed, other.hint,
-                  other.envelope);
+                  other.envelope, other.shaping);
 }
 
 void Studio::render_viewport_image(int width, int height) {
@@ -83,6 +83,7 @@ void Studio::render_viewport_image(int width, int height) {
   inputs.detailed = !moving;
   if (hint_) inputs.hint = {hint_->part, static_cast<std::int64_t>(hint_->version)};
   inputs.envelope = shaping_.envelope_shown();
+  inputs.shaping = shaping_.overlay_revision();
   if (drag_preview_)
     inputs.preview = {drag_preview_->translation.x(), drag_preview_->translation.y(), drag_preview_->translation.z(),
                       drag_preview_->rotation.w(), drag_preview_->rotation.x(), drag_preview_->rotation.y(),

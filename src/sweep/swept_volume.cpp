@@ -14,6 +14,7 @@
 
 #include "reconfig/geometry/bounding_box.h"
 #include "reconfig/geometry/mass_properties.h"
+#include "sweep/detail/clearance_check.h"
 #include "sweep/detail/outer_shells.h"
 #include "sweep/detail/part_distance.h"
 
@@ -26,6 +27,11 @@ using openvdb::FloatTree;
 
 constexpr int kLeafDim = 8;  // FloatTree::LeafNodeType::DIM
 const double kSqrt3 = std::sqrt(3.0);
+/// The tight level's buffer over ε + δ, in cells: room for the contour's chords (see the header).
+constexpr double kTightBuffer = 0.15;
+/// The levels tried above the tight one, in cells, until one passes the clearance check; the
+/// last one is beyond the cell bound (which is used instead).
+constexpr double kLevelSteps[] = {0.0, 0.25, 0.6, 2.0};
 
 void initialize_openvdb() {
   static std::once_flag once;
@@ -86,13 +92,15 @@ struct LeafResult {
   int voxels = 0;
 };
 
-/// The evaluation of the swept field F − ℓ on one leaf (values clamped to [−W, W]), by
+/// The evaluation of the swept field G̃ − ℓ on one leaf (values clamped to [−W, W]), by
 /// recursive subdivision of the leaf into blocks of 4³ and 2³, then the voxels of a 2³ block by
 /// branch and bound over its samples (`evaluate_voxel`). A block of n³
 /// voxels around center c: every voxel x has φ̃_k(x) >= φ̃_k(c) − s_n with s_n = the block's
 /// half diagonal + 2e (φ is 1-Lipschitz, a look-up is within e of it), so with
 /// m = min_k φ̃_k(c): the block is inside when m + s_n < ℓ − W, outside when m − s_n > ℓ + W, and
 /// otherwise only the samples with φ̃_k(c) − s_n < min(m + s_n, ℓ + W) can set a voxel's minimum.
+/// G̃(x) = min_k D̃_k(x), D̃_k a lower bound of the distance to the solid of pose k
+/// (`PartDistance::lower_bound`), is a lower bound of the sampled swept distance.
 class LeafEvaluator {
  public:
   /// @param chunks  runs of consecutive samples, each with how far the part moves within it
@@ -110,6 +118,19 @@ class LeafEvaluator {
     auto leaf = std::make_unique<FloatTree::LeafNodeType>(origin, float(band_), false);
     for (openvdb::Index n = 0; n < FloatTree::LeafNodeType::SIZE; ++n) leaf->setValueOn(n, values[n]);
     return {LeafResult::kBand, std::move(leaf), FloatTree::LeafNodeType::SIZE};
+  }
+
+  /// G̃ at a world point, capped at ℓ + W: a lower bound of the distance from x to the union
+  /// of the sampled poses. A run of samples is skipped when its first pose proves every pose
+  /// of the run (within `reach` of it) no nearer than the least value found yet.
+  double point_lower_bound(const Eigen::Vector3d& world) const {
+    const Eigen::Vector3d x = world / h_;
+    double best = level_ + band_;
+    for (const SampleChunk& chunk : chunks_) {
+      if (part_grid_.nearest(maps_[chunk.first].apply(x)) - chunk.reach - 2 * lookup_error_ >= best) continue;
+      for (int k = chunk.first; k < chunk.end; ++k) best = std::min(best, sample_lower_bound(k, x, best));
+    }
+    return best;
   }
 
  private:
@@ -151,13 +172,16 @@ class LeafEvaluator {
     if (m - slack > level_ + band_) return kOutsideBlock;  // values stay +W
     const double keep_below = std::min(m + slack, level_ + band_) + slack;
     if (n == 2) {
-      std::vector<std::pair<float, int>> nearest_first;
+      // Sorted by a lower bound of φ_k at the center (the look-up minus its own rounding
+      // distance): a voxel lies within the half diagonal of the center, φ_k is 1-Lipschitz.
+      std::vector<std::pair<double, int>> nearest_first;
       for (std::size_t c = 0; c < candidates.size(); ++c)
-        if (at_center[c] < keep_below) nearest_first.emplace_back(at_center[c], candidates[c]);
+        if (at_center[c] < keep_below)
+          nearest_first.emplace_back(part_grid_.nearest_lower_bound(maps_[candidates[c]].apply(center)), candidates[c]);
       std::sort(nearest_first.begin(), nearest_first.end());
       for (int child = 0; child < 8; ++child) {
         const Eigen::Vector3i voxel = local + Eigen::Vector3i(child >> 2, (child >> 1) & 1, child & 1);
-        evaluate_voxel(leaf_origin, voxel, slack, nearest_first, values);
+        evaluate_voxel(leaf_origin, voxel, 0.5 * kSqrt3 * h_, nearest_first, values);
       }
       return kMixedBlock;
     }
@@ -175,17 +199,25 @@ class LeafEvaluator {
     return inside == 8 ? kInsideBlock : outside == 8 ? kOutsideBlock : kMixedBlock;
   }
 
-  /// One voxel of a 2³ block, F − ℓ clamped to [−W, W], by branch and bound over the block's
-  /// samples sorted by their value at its center: a sample whose value there minus `slack`
-  /// (half the block's diagonal plus two look-up errors) is not below the least value found
-  /// yet, nor below ℓ + W, cannot lower it, and neither can any later one.
+  /// D̃_k at index-space point x when it may be below `best` (one look-up tells), else `best`.
+  double sample_lower_bound(int k, const Eigen::Vector3d& x, double best) const {
+    const Eigen::Vector3d y = maps_[k].apply(x);
+    if (part_grid_.nearest_lower_bound(y) >= best) return best;
+    return std::min(best, part_grid_.lower_bound(y));
+  }
+
+  /// One voxel of a 2³ block, G̃ − ℓ clamped to [−W, W], by branch and bound over the block's
+  /// samples sorted by a lower bound of their value at its center: a sample whose bound there
+  /// minus `slack` (half the block's diagonal) is not below the least value found yet, nor
+  /// below ℓ + W, cannot lower it, and neither can any later one.
   void evaluate_voxel(const Eigen::Vector3d& leaf_origin, const Eigen::Vector3i& local, double slack,
-                      const std::vector<std::pair<float, int>>& nearest_first, std::vector<float>& values) const {
+                      const std::vector<std::pair<double, int>>& nearest_first, std::vector<float>& values) const {
     const Eigen::Vector3d x = leaf_origin + local.cast<double>();
     double best = level_ + band_;
+    const double floor = std::max(0.0, level_ - band_);  // D̃ >= 0: nothing lowers it further
     for (const auto& [at_center, k] : nearest_first) {
-      if (at_center - slack >= best || best <= level_ - band_) break;
-      best = std::min(best, double(part_grid_.nearest(maps_[k].apply(x))));
+      if (at_center - slack >= best || best <= floor) break;
+      best = sample_lower_bound(k, x, best);
     }
     values[(local.x() << 6) | (local.y() << 3) | local.z()] = float(std::clamp(best - level_, -band_, band_));
   }
@@ -218,6 +250,15 @@ geometry::Mesh mesh_from_vdb(const std::vector<openvdb::Vec3s>& points, const st
   return mesh;
 }
 
+/// The outer shells of the surface G̃ − tight level = `isovalue`.
+geometry::Mesh contour(const FloatGrid& grid, double isovalue, int& filled_cavities) {
+  std::vector<openvdb::Vec3s> points;
+  std::vector<openvdb::Vec3I> triangles;
+  std::vector<openvdb::Vec4I> quads;
+  openvdb::tools::volumeToMesh(grid, points, triangles, quads, isovalue, 0.0);
+  return detail::outer_shells(mesh_from_vdb(points, triangles, quads), filled_cavities);
+}
+
 }  // namespace
 
 SweptVolumeResult swept_volume(const geometry::Mesh& part, const RelativeMotion& motion,
@@ -238,10 +279,12 @@ SweptVolumeResult swept_volume(const geometry::Mesh& part, const RelativeMotion&
   result.grid_step = h;
   const std::vector<double> times = motion.time_samples(request.time_fraction * h, result.motion_error);
   result.time_samples = static_cast<int>(times.size());
-  const double lookup_error = 0.5 * kSqrt3 * h;
-  result.level = request.offset + result.motion_error + lookup_error + kSqrt3 * h;
-  result.margin = result.level - request.offset;
-  const double band = 1.5 * h;  // |F − ℓ| is stored up to this, beyond it only the side matters
+  const double lookup_error = 0.5 * kSqrt3 * h;  // of a nearest-grid-point look-up (culling only)
+  const double epsilon = request.offset, delta = result.motion_error, grown = 1 + 1e-9;
+  const double safe_level = (epsilon + delta + kSqrt3 * h) * grown + 1e-12;
+  const double tight_level = std::max(epsilon + delta + kTightBuffer * h, kSqrt3 * h + delta) * grown + 1e-12;
+  result.level = tight_level;
+  const double band = 2 * h;  // |G̃ − ℓ| is stored up to this (> safe − tight), beyond it only the side
   // Outside, beyond ℓ + W + (the slack of a 2³ block) a look-up only needs to be a lower bound.
   const double part_band_voxels = std::ceil((result.level + band + 0.5 * kSqrt3 * h + 2 * lookup_error) / h) + 2;
 
@@ -251,11 +294,11 @@ SweptVolumeResult swept_volume(const geometry::Mesh& part, const RelativeMotion&
   const detail::PartDistance part_distance(part, h, part_band_voxels * h, inner_band);
   if (!report_progress(request.progress, 0.1)) return result.cancelled = true, result;
 
-  Eigen::AlignedBox3d box = swept_box(part, motion, times, result.level + result.motion_error + band + 2 * h);
+  Eigen::AlignedBox3d box = swept_box(part, motion, times, safe_level + result.motion_error + band + 2 * h);
   if (request.clip) {
     Eigen::AlignedBox3d clip = *request.clip;
-    clip.min().array() -= 2 * h;
-    clip.max().array() += 2 * h;
+    clip.min().array() -= epsilon + 3 * h;
+    clip.max().array() += epsilon + 3 * h;
     box = box.intersection(clip);
     if (box.isEmpty()) return result;
   }
@@ -305,11 +348,23 @@ SweptVolumeResult swept_volume(const geometry::Mesh& part, const RelativeMotion&
     tree.addLeaf(leaves[n].leaf.release());
   }
   for (const Coord& origin : ring) tree.addLeaf(new FloatTree::LeafNodeType(origin, float(band), true));
-  std::vector<openvdb::Vec3s> points;
-  std::vector<openvdb::Vec3I> triangles;
-  std::vector<openvdb::Vec4I> quads;
-  openvdb::tools::volumeToMesh(*swept, points, triangles, quads, 0.0, 0.0);
-  result.mesh = detail::outer_shells(mesh_from_vdb(points, triangles, quads), result.filled_cavities);
+  // The tight level, then up a ladder of levels while the clearance check fails, down to the
+  // cell bound (conservative without a check). The grid stores G̃ − tight level.
+  std::optional<Eigen::AlignedBox3d> region = request.clip;
+  if (region) region->min().array() -= epsilon, region->max().array() += epsilon;
+  const auto clear = [&](const geometry::Mesh& mesh) {
+    return detail::mesh_keeps_clear(mesh, region, epsilon + delta,
+                                    [&](const Eigen::Vector3d& x) { return evaluator.point_lower_bound(x); });
+  };
+  for (const double step : kLevelSteps) {
+    const double level = std::min(safe_level, tight_level + step * h);
+    result.mesh = contour(*swept, level - tight_level, result.filled_cavities);
+    result.level = level;
+    if (level == safe_level) break;
+    if (!report_progress(request.progress, 0.9 + 0.02 * step)) return result.mesh = {}, result.cancelled = true, result;
+    if ((result.verified = clear(result.mesh))) break;
+  }
+  result.margin = result.level - epsilon;
   if (!report_progress(request.progress, 1.0)) {
     result.mesh = {};
     result.cancelled = true;

@@ -8,6 +8,8 @@
 #include "reconfig/geometry/bounding_box.h"
 #include "reconfig/geometry/mass_properties.h"
 #include "reconfig/geometry/mesh_check.h"
+#include "reconfig/geometry/point_in_solid.h"
+#include "reconfig/sweep/relative_motion.h"
 #include "script.h"
 #include "bench_table_unfold.h"
 
@@ -78,6 +80,56 @@ TEST_F(StudioShaping, TheCarveWindowPresetsTheCollidingParts) {
   studio().select_part(-1);  // nothing to carve: the window closes
   frontend_->run_frame();
   EXPECT_FALSE(studio().shaping().carve_window());
+}
+
+/// The Carve window previews what it would cut: the armrest's sweep in the backrest's frame,
+/// shown while the window is open, holding the armrest wherever it is inside the backrest's box
+/// at sampled times, recomputed when the settings change, gone when the window closes.
+TEST_F(StudioShaping, TheCarveWindowPreviewsTheSweptVolumeInsideThePart) {
+  const int backrest = part("backrest"), armrest = part("armrest_left");
+  run_script(*frontend_, "carve-window backrest by armrest_left offset 0.005 grid 0.006\n"
+                         "expect-carve-preview none\n"  // still sweeping
+                         "wait-carve-preview 60\n"
+                         "expect-carve-preview\n", "preview.script");
+  const auto preview = studio().shaping().carve_preview(studio());
+  ASSERT_TRUE(preview);
+  EXPECT_TRUE(geometry::check_mesh(*preview).is_valid_solid());
+  // Every armrest vertex at sampled times, in the backrest's frame, inside the backrest's box
+  // (the preview is clipped to it), lies inside the preview.
+  const sweep::RelativeMotion motion = sweep::relative_motion(scene(), unfold_, armrest, backrest);
+  const Eigen::AlignedBox3d box = geometry::bounding_box(scene().parts[backrest].mesh.V);
+  const geometry::Mesh& rest = scene().parts[armrest].mesh;
+  // (The vertices and the faces' centroids: the armrest only grazes the backrest's box.)
+  std::vector<Eigen::Vector3d> points;
+  for (int v = 0; v < rest.vertex_count(); ++v) points.push_back(rest.V.row(v).transpose());
+  for (int f = 0; f < rest.face_count(); ++f)
+    points.push_back((rest.V.row(rest.F(f, 0)) + rest.V.row(rest.F(f, 1)) + rest.V.row(rest.F(f, 2))).transpose() / 3);
+  int checked = 0;
+  for (double t = 0; t <= 1.0; t += 1.0 / 64)
+    for (const Eigen::Vector3d& p : points) {
+      const Eigen::Vector3d x = motion.at(t) * p;
+      if (!box.contains(x)) continue;
+      ++checked;
+      ASSERT_TRUE(geometry::point_in_solid(*preview, x)) << "t " << t << " at " << p.transpose();
+    }
+  EXPECT_GT(checked, 20) << "the armrest passes through the backrest's box";
+  // The viewport draws it (placed with the backrest): one more translucent mesh.
+  EXPECT_NE(studio().shaping().overlay_revision(), 0u);
+  // Both armrests: a new preview, holding the first.
+  run_script(*frontend_, "carve-window backrest by armrest_left,armrest_right offset 0.005 grid 0.006\n"
+                         "wait-carve-preview 60\n", "both.script");
+  const auto both = studio().shaping().carve_preview(studio());
+  ASSERT_TRUE(both);
+  EXPECT_NE(both, preview);
+  EXPECT_GT(both->face_count(), preview->face_count());
+  // An edit of the design drops it until it is swept again; closing the window hides it.
+  run_script(*frontend_, "sculpt armrest_left sphere 0.05 0.05 0.05 0.05 0 -0.25 0 translate 0 0.02 0\n", "edit.script");
+  studio().select_part(backrest);
+  EXPECT_FALSE(studio().shaping().carve_preview(studio()));
+  studio().select_part(-1);  // the window closes
+  frontend_->run_frame();
+  EXPECT_FALSE(studio().shaping().carve_window());
+  EXPECT_FALSE(studio().shaping().carve_preview(studio()));
 }
 
 TEST_F(StudioShaping, TheEnvelopeCoversThePartThroughoutTheTransitionAndFollowsEdits) {

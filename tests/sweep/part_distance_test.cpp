@@ -56,5 +56,30 @@ TEST(PartDistance, BeyondTheGridIsALowerBoundFromTheBoundingBall) {
   EXPECT_GE(value, 5.0 - 0.5 - 0.06);
 }
 
+/// D(x) = max(φ(x), 0) by brute force, against the trilinear lower bound at random points
+/// (off the grid): never above, and close on the box's flat walls.
+TEST(PartDistance, LowerBoundNeverExceedsTheDistanceAndIsTightOnWalls) {
+  const double h = 0.02;
+  geometry::Mesh mesh = scene::Part::primitive_mesh(scene::BoxPrimitive{{0.5, 0.3, 0.2}});
+  const PartDistance distance(mesh, h, 0.12, 0.05);
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> coordinate(-0.4, 0.4);
+  int near_wall = 0;
+  for (int n = 0; n < 3000; ++n) {
+    const Eigen::Vector3d x(coordinate(random), coordinate(random), coordinate(random));
+    const double exact = std::max(0.0, reference_distance(mesh, x));
+    const double bound = distance.lower_bound(x / h);
+    EXPECT_LE(bound, exact) << x.transpose();
+    EXPECT_GE(bound, 0.0);
+    // In front of a face (not near an edge) and inside the band: within h²/(2 D) of D.
+    const Eigen::Vector3d excess = (x.cwiseAbs() - Eigen::Vector3d(0.25, 0.15, 0.1)).cwiseMax(0.0);
+    if (exact > 0.02 && exact < 0.1 && (excess.array() > 0).count() == 1) {
+      EXPECT_GE(bound, exact - h * h / (2 * exact) - 1e-9) << x.transpose();
+      ++near_wall;
+    }
+  }
+  EXPECT_GT(near_wall, 100);
+}
+
 }  // namespace
 }  // namespace reconfig::sweep::detail

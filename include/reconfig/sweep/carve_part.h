@@ -33,6 +33,13 @@ struct CarveResult {
   bool ok() const { return problem.empty() && !cancelled; }
 };
 
+/// The carvers' swept volumes, offset by ε, in A's rest frame and clipped to A's box: what
+/// `carve_part` subtracts (one per carver, empty where a sweep misses A). Progress over all
+/// of them; a cancelled sweep ends the list (its result says `cancelled`).
+/// @param scene    a validated reconfigurable
+/// @param request  what is carved, by what, when, and how finely
+std::vector<SweptVolumeResult> carver_sweeps(const scene::Reconfigurable& scene, const CarveRequest& request);
+
 /// Sweeps each carver in A's frame (`relative_motion`, `swept_volume`) and subtracts the
 /// swept volumes from A exactly (`subtract_meshes`).
 /// @param scene    a validated reconfigurable

@@ -124,13 +124,23 @@ void PartDistance::compute_signs(const geometry::Mesh& part, std::vector<char>& 
   });
 }
 
-float PartDistance::nearest(const Eigen::Vector3d& x) const {
-  const int i = int(std::floor(x.x() + 0.5)) - lo_.x(), j = int(std::floor(x.y() + 0.5)) - lo_.y(),
-            k = int(std::floor(x.z() + 0.5)) - lo_.z();
-  const bool in_box = unsigned(i) < unsigned(size_.x()) && unsigned(j) < unsigned(size_.y()) && unsigned(k) < unsigned(size_.z());
-  const float value = in_box ? values_[index(i, j, k)] : float(band_);
-  if (value < float(band_)) return value;
-  return std::max(value, float((x - center_).norm() * h_ - radius_));
+double PartDistance::lower_bound(const Eigen::Vector3d& x) const {
+  const double from_nearest = nearest_lower_bound(x);
+  const Eigen::Vector3d base = x.array().floor().matrix();
+  const Eigen::Vector3i corner = base.cast<int>() - lo_;
+  if ((corner.array() < 0).any() || (corner.array() + 1 >= size_.array()).any())
+    return std::max(from_nearest, 0.0) * (1 - 1e-6);
+  const Eigen::Vector3d t = x - base;
+  double interpolated = 0;
+  for (int c = 0; c < 8; ++c) {
+    const int di = c >> 2, dj = (c >> 1) & 1, dk = c & 1;
+    const double weight = (di ? t.x() : 1 - t.x()) * (dj ? t.y() : 1 - t.y()) * (dk ? t.z() : 1 - t.z());
+    const double value = std::max(0.0f, values_[index(corner.x() + di, corner.y() + dj, corner.z() + dk)]);
+    interpolated += weight * value * value;
+  }
+  const double variance = (t.x() * (1 - t.x()) + t.y() * (1 - t.y()) + t.z() * (1 - t.z())) * h_ * h_;
+  // (1 − 10⁻⁶): the grid's values are floats, rounded either way.
+  return std::max(from_nearest, std::sqrt(std::max(0.0, interpolated - variance))) * (1 - 1e-6);
 }
 
 }  // namespace reconfig::sweep::detail

@@ -5,6 +5,8 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "reconfig/geometry/mesh.h"
@@ -27,7 +29,28 @@ class PartDistance {
   /// φ (clamped to [−inner_band, band]; beyond the box, the larger of band and the distance to the part's
   /// bounding ball: lower bounds of φ) at the grid point nearest to the
   /// index-space point x (world point x·h).
-  float nearest(const Eigen::Vector3d& x) const;
+  float nearest(const Eigen::Vector3d& x) const {
+    const int i = int(std::floor(x.x() + 0.5)) - lo_.x(), j = int(std::floor(x.y() + 0.5)) - lo_.y(),
+              k = int(std::floor(x.z() + 0.5)) - lo_.z();
+    const bool in_box =
+        unsigned(i) < unsigned(size_.x()) && unsigned(j) < unsigned(size_.y()) && unsigned(k) < unsigned(size_.z());
+    const float value = in_box ? values_[index(i, j, k)] : float(band_);
+    if (value < float(band_)) return value;
+    return std::max(value, float((x - center_).norm() * h_ - radius_));
+  }
+
+  /// A lower bound of the distance from the world point x·h to the part's solid (0 inside):
+  /// D² − |y|² is concave (D² is a minimum of |y − s|² over the solid's points s), so the
+  /// trilinear interpolant of D² at the 8 grid points around x, minus the interpolant's
+  /// variance Σ w_c |x − c|² h², is at most D²(x); the result is the square root of that,
+  /// and never less than `nearest(x)` minus the distance to that grid point. Exact for a plane
+  /// through grid points along an axis; within h²/(8 D) of D elsewhere on flat walls.
+  double lower_bound(const Eigen::Vector3d& x) const;
+
+  /// The cheap lower bound of φ at x·h: `nearest(x)` minus the distance to that grid point.
+  double nearest_lower_bound(const Eigen::Vector3d& x) const {
+    return double(nearest(x)) - (x - (x.array() + 0.5).floor().matrix()).norm() * h_;
+  }
 
  private:
   std::size_t index(int i, int j, int k) const { return (std::size_t(i) * size_.y() + j) * size_.z() + k; }
