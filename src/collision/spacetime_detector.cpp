@@ -135,10 +135,11 @@ std::vector<CollisionInterval> SpacetimeDetector::intervals() const {
 }
 
 bool SpacetimeDetector::check_clearance(const scene::Reconfigurable& scene, const BodyTrees& trees,
-                                        const scene::DirtySet* dirty, const DetectCallbacks& callbacks) {
+                                        const ChangedRanges* changed, const DetectCallbacks& callbacks) {
   if (!closer_) return true;
   const DetectCallbacks pass = pass_callbacks(callbacks, true, 0.5);
-  if (!(dirty ? closer_->update(scene, trees, *dirty, pass) : closer_->detect(scene, trees, pass))) {
+  closer_->proxies_ = proxies_;  // the same motion: the proxies are not built twice
+  if (!(changed ? closer_->retraverse_changed(scene, trees, *changed, pass) : closer_->traverse_all(scene, trees, pass))) {
     valid_ = false;
     return false;
   }
@@ -152,20 +153,27 @@ bool SpacetimeDetector::check_clearance(const scene::Reconfigurable& scene, cons
 bool SpacetimeDetector::detect(const scene::Reconfigurable& scene, const BodyTrees& trees,
                                const DetectCallbacks& callbacks) {
   valid_ = false;
-  stats_ = {};
   const int n = static_cast<int>(scene.parts.size());
   proxies_.assign(n, {});
   tbb::parallel_for(0, n, [&](int p) {
     proxies_[p] = build_part_proxy(scene, transition_, p, options_.tolerance, options_.min_step);
   });
+  if (!traverse_all(scene, trees, pass_callbacks(callbacks, closer_ != nullptr, 0))) return false;
+  return check_clearance(scene, trees, nullptr, callbacks);
+}
+
+bool SpacetimeDetector::traverse_all(const scene::Reconfigurable& scene, const BodyTrees& trees,
+                                     const DetectCallbacks& callbacks) {
+  valid_ = false;
+  stats_ = {};
   contacts_.clear();
   containments_.clear();
   std::vector<PairRange> work;  // the pairs that may meet: memory linear in them, not in n²
   for (const detail::TraversalRange& r : detail::candidate_pairs(trees, proxies_, scene, options_))
     work.push_back({r.a, r.b, r.t0, r.t1});
-  if (!traverse(scene, trees, work, {}, pass_callbacks(callbacks, closer_ != nullptr, 0))) return false;
+  if (!traverse(scene, trees, work, {}, callbacks)) return false;
   valid_ = true;
-  return check_clearance(scene, trees, nullptr, callbacks);
+  return true;
 }
 
 bool SpacetimeDetector::update(const scene::Reconfigurable& scene, const BodyTrees& trees,
@@ -173,19 +181,25 @@ bool SpacetimeDetector::update(const scene::Reconfigurable& scene, const BodyTre
   if (!valid_ || dirty.structure_changed || !dirty.geometry_changed.empty() ||
       proxies_.size() != scene.parts.size())
     return detect(scene, trees, callbacks);
-  stats_ = {};
   // Rebuild the proxies of the dirty parts (a proxy is a function of the motion alone, so the
   // result equals a detection from scratch) and find where they changed.
   std::set<int> dirty_parts;
   for (const scene::DirtyRange& range : dirty.ranges)
     if (range.transition == transition_) dirty_parts.insert(range.part);
-  std::map<int, std::vector<std::pair<double, double>>> changed;
+  ChangedRanges changed;
   for (int part : dirty_parts) {
     PartProxy fresh = build_part_proxy(scene, transition_, part, options_.tolerance, options_.min_step);
     if (const auto range = changed_range(proxies_[part], fresh)) changed[part].push_back(*range);
     proxies_[part] = std::move(fresh);
   }
-  if (changed.empty()) return check_clearance(scene, trees, &dirty, callbacks);
+  if (!retraverse_changed(scene, trees, changed, pass_callbacks(callbacks, closer_ != nullptr, 0))) return false;
+  return check_clearance(scene, trees, &changed, callbacks);
+}
+
+bool SpacetimeDetector::retraverse_changed(const scene::Reconfigurable& scene, const BodyTrees& trees,
+                                           const ChangedRanges& changed, const DetectCallbacks& callbacks) {
+  stats_ = {};
+  if (changed.empty()) return true;
   std::map<std::pair<int, int>, std::vector<std::pair<double, double>>> pair_ranges;
   const int n = static_cast<int>(scene.parts.size());
   for (const auto& [part, ranges] : changed)
@@ -211,8 +225,7 @@ bool SpacetimeDetector::update(const scene::Reconfigurable& scene, const BodyTre
   std::erase_if(containments_, [&](const Containment& c) {
     return pairs.count({std::min(c.inner, c.outer), std::max(c.inner, c.outer)}) > 0;
   });
-  if (!traverse(scene, trees, work, previous, pass_callbacks(callbacks, closer_ != nullptr, 0))) return false;
-  return check_clearance(scene, trees, &dirty, callbacks);
+  return traverse(scene, trees, work, previous, callbacks);
 }
 
 bool SpacetimeDetector::traverse(const scene::Reconfigurable& scene, const BodyTrees& trees, const std::vector<PairRange>& work,

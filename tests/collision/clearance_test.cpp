@@ -14,6 +14,8 @@
 #include "reconfig/collision/reference_check.h"
 #include "reconfig/collision/spacetime_detector.h"
 #include "reconfig/collision/triangle_clearance.h"
+#include "reconfig/scene/edits.h"
+#include "reconfig/scene/history.h"
 
 namespace reconfig::collision {
 namespace {
@@ -234,6 +236,41 @@ TEST(Clearance, RandomTwoPartScenesAgreeWithTheReference) {
     }
   }
   EXPECT_GT(clearances, 3);  // most rounds come close
+}
+
+TEST(Clearance, AnUpdateGivesTheClearancesOfADetectionFromScratch) {
+  // The mover slides 0.01 above the fixed box and through a second one; a key added in the
+  // middle of its track, then moved, changes its motion there only.
+  scene::Reconfigurable scene = boxes({-3, 0, 1.01}, {3, 0, 1.01}, {{0, 0, 0}, {0, 0, 1.6}});
+  const BodyTrees trees = build_body_trees(scene);
+  const DetectorOptions options = with_clearance(0.02);
+  SpacetimeDetector incremental(0, options);
+  ASSERT_TRUE(incremental.detect(scene, trees));
+  ASSERT_GT(count_clearances(incremental.intervals()), 0);  // the test is about them
+  scene::History history;
+  ASSERT_TRUE(incremental.update(scene, trees, history.execute(scene, scene::insert_key("slide", "mover", scene::KeyKind::kTranslation, 0.5))));
+  for (const double lift : {0.005, 0.3, -0.004}) {
+    const auto& keys = std::get<scene::KeyframedTrack>(scene.transitions[0].tracks.at("mover")).translation;
+    motion::TranslationKey moved = keys[1];
+    moved.point.z() += lift;
+    moved.in.z() += lift;
+    moved.out.z() += lift;
+    ASSERT_TRUE(incremental.update(scene, trees, history.execute(scene, scene::set_translation_key("slide", "mover", 1, moved))));
+    SpacetimeDetector fresh(0, options);
+    ASSERT_TRUE(fresh.detect(scene, trees));
+    const std::vector<CollisionInterval> updated = consolidate(incremental.intervals(), incremental.containments());
+    const std::vector<CollisionInterval> expected = consolidate(fresh.intervals(), fresh.containments());
+    ASSERT_EQ(updated.size(), expected.size()) << "lift " << lift;
+    for (std::size_t i = 0; i < updated.size(); ++i) {
+      EXPECT_EQ(updated[i].clearance, expected[i].clearance) << "lift " << lift;
+      EXPECT_EQ(updated[i].t0, expected[i].t0) << "lift " << lift;
+      EXPECT_EQ(updated[i].t1, expected[i].t1) << "lift " << lift;
+      EXPECT_EQ(updated[i].box.min(), expected[i].box.min()) << "lift " << lift;
+      EXPECT_EQ(updated[i].box.max(), expected[i].box.max()) << "lift " << lift;
+    }
+    for (std::size_t p = 0; p < fresh.proxies().size(); ++p)
+      EXPECT_EQ(incremental.proxies()[p].times, fresh.proxies()[p].times) << "lift " << lift;
+  }
 }
 
 TEST(Clearance, TheSceneSettingTurnsItOn) {

@@ -16,6 +16,8 @@ namespace {
 
 using test::boxes;
 
+Eigen::Vector3d normal_of_test(const TriangleCorners& t) { return (t[1] - t[0]).cross(t[2] - t[0]); }
+
 std::vector<CollisionInterval> engine(const scene::Reconfigurable& scene, DetectorOptions options = {}) {
   SpacetimeDetector detector(0, options);
   EXPECT_TRUE(detector.detect(scene, build_body_trees(scene)));
@@ -128,6 +130,75 @@ TEST(ContactSemantics, EngineEndsLieWithinTheReferencesOwnError) {
     }
   }
   EXPECT_GT(compared, 3);  // most rounds do collide
+}
+
+/// `interference_pieces` by its definition: every piece halved where `touching_throughout`
+/// cannot certify it, each instant decided on its own.
+void halve_by_definition(const TriangleCorners& a0, const TriangleCorners& a1, const TriangleCorners& b0,
+                         const TriangleCorners& b1, double lo, double hi, double delta, int depth,
+                         std::vector<TimeInterval>& out) {
+  const bool ends_interfere = !touching_throughout(a0, a1, b0, b1, lo, lo, delta) &&
+                              !touching_throughout(a0, a1, b0, b1, hi, hi, delta);
+  if (!ends_interfere && touching_throughout(a0, a1, b0, b1, lo, hi, delta)) return;
+  const double mid = 0.5 * (lo + hi);
+  if (depth == 0 || ends_interfere || !(lo < mid && mid < hi)) {
+    out.push_back({lo, hi});
+    return;
+  }
+  halve_by_definition(a0, a1, b0, b1, lo, mid, delta, depth - 1, out);
+  halve_by_definition(a0, a1, b0, b1, mid, hi, delta, depth - 1, out);
+}
+
+TEST(TriangleTouching, InterferencePiecesAreThoseOfTheDefinition) {
+  // Random triangles passing through, sliding along and resting on a fixed one, as the narrow
+  // phase reports their pieces (unmerged, as the traversal asks).
+  std::mt19937 random(1919);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  const auto jitter = [&](double by) -> Eigen::Vector3d { return by * Eigen::Vector3d(unit(random), unit(random), unit(random)); };
+  const double delta = 1e-6;
+  const TriangleCorners still{Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 1, 0)};
+  long pieces = 0, kept = 0, certified = 0, halved = 0;
+  for (int round = 0; round < 400; ++round) {
+    const int kind = round % 3;  // through, along (in the plane z = 0, facing down), on top (vertex at z = 0)
+    TriangleCorners start, end;
+    const Eigen::Vector3d shift = Eigen::Vector3d(unit(random), unit(random), kind == 0 ? 2 * unit(random) : 0);
+    for (int c = 0; c < 3; ++c) {
+      const Eigen::Vector3d corner = kind == 0 ? jitter(0.6) : Eigen::Vector3d(0.5 * unit(random), 0.5 * unit(random), 0);
+      start[c] = Eigen::Vector3d(0.3, 0.3, kind == 0 ? 0 : (kind == 2 && c > 0 ? 0.4 : 0)) + corner;
+      end[c] = start[c] + shift;
+    }
+    if (kind == 1 && normal_of_test(start).z() > 0) {  // face down onto the still one
+      std::swap(start[1], start[2]);
+      std::swap(end[1], end[2]);
+    }
+    TrianglePairCcdRequest request;
+    request.a_start = still;
+    request.a_end = still;
+    request.b_start = start;
+    request.b_end = end;
+    request.time_tolerance = 1.0 / 64;
+    request.distance_tolerance = 1e-4;
+    request.merge_pieces = false;
+    const std::vector<TimeInterval> spans = triangle_pair_ccd(request).intervals;
+    std::vector<TimeInterval> expected;
+    for (const TimeInterval& span : spans) halve_by_definition(still, still, start, end, span.lo, span.hi, delta, 5, expected);
+    const std::vector<TimeInterval> found = interference_pieces(still, still, start, end, spans, delta);
+    ASSERT_EQ(found.size(), expected.size()) << "round " << round;
+    for (std::size_t i = 0; i < found.size(); ++i) {
+      EXPECT_EQ(found[i].lo, expected[i].lo) << "round " << round;
+      EXPECT_EQ(found[i].hi, expected[i].hi) << "round " << round;
+    }
+    pieces += static_cast<long>(spans.size());
+    kept += static_cast<long>(found.size());
+    certified += found.empty() && !spans.empty();
+    halved += std::any_of(found.begin(), found.end(), [&](const TimeInterval& f) {
+      return std::none_of(spans.begin(), spans.end(), [&](const TimeInterval& s) { return s.lo == f.lo && s.hi == f.hi; });
+    });
+  }
+  EXPECT_GT(pieces, 1000);  // the cases the test is for all occur
+  EXPECT_GT(kept, 100);
+  EXPECT_GT(certified, 20);
+  EXPECT_GT(halved, 20);
 }
 
 TEST(TriangleTouching, CoplanarFacesTouchFacingEachOtherAndInterfereFacingTheSameWay) {

@@ -10,7 +10,9 @@
 
 #include <cstddef>
 #include <functional>
+#include <map>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "reconfig/collision/body_tree.h"
@@ -161,13 +163,20 @@ class SpacetimeDetector {
     int a, b;       ///< parts, a < b
     double t0, t1;  ///< time range to traverse (proxy sample times, or 0 and 1)
   };
+  /// Per part whose proxy an update changed: the time ranges where it changed.
+  using ChangedRanges = std::map<int, std::vector<std::pair<double, double>>>;
+  /// With the proxies built: finds every contact over the whole transition.
+  bool traverse_all(const scene::Reconfigurable& scene, const BodyTrees& trees, const DetectCallbacks& callbacks);
+  /// With the proxies rebuilt: re-traverses the pairs of the changed parts where they changed.
+  bool retraverse_changed(const scene::Reconfigurable& scene, const BodyTrees& trees, const ChangedRanges& changed,
+                          const DetectCallbacks& callbacks);
   /// @param previous  the contacts an earlier result had in `work`: the search starts from the
   ///                  triangle pairs that made their groups' extents
   bool traverse(const scene::Reconfigurable& scene, const BodyTrees& trees, const std::vector<PairRange>& work,
                 const std::vector<TriangleContact>& previous, const DetectCallbacks& callbacks);
-  /// After `detect` or `update` of the collisions: the same for the clearance traversal, and
-  /// `clearances_` from both.
-  bool check_clearance(const scene::Reconfigurable& scene, const BodyTrees& trees, const scene::DirtySet* dirty,
+  /// After `detect` (`changed` null) or `update` of the collisions: the same for the clearance
+  /// traversal, on this detector's proxies, and `clearances_` from both.
+  bool check_clearance(const scene::Reconfigurable& scene, const BodyTrees& trees, const ChangedRanges* changed,
                        const DetectCallbacks& callbacks);
 
   int transition_;

@@ -1,5 +1,7 @@
 #include "collision/detail/interval_ends.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <optional>
 
@@ -109,28 +111,13 @@ std::optional<double> refined_end(EndSearch& search, const std::vector<const Col
   return std::nullopt;
 }
 
-/// The refined [t0, t1] of one interval (t0 > t1: no interference at all).
-std::pair<double, double> refined(const scene::Reconfigurable& scene, const BodyTrees& trees,
-                                  const std::vector<PartProxy>& proxies, const DetectorOptions& options,
-                                  const std::vector<CollisionInterval>& groups, const CollisionInterval& interval,
-                                  DetectionStats& stats) {
-  double t0 = interval.t0, t1 = interval.t1;
-  const std::vector<const CollisionInterval*> mine = groups_of(groups, interval);
-  if (mine.empty() || t0 == t1) return {t0, t1};
-  if (t0 > 0) {
-    EndSearch search(scene, trees, proxies, options, interval, stats);
-    const std::optional<double> start = refined_end(search, mine, interval, false);
-    if (!start) return {1, 0};
-    t0 = *start;
-  }
-  if (t1 < 1) {
-    EndSearch search(scene, trees, proxies, options, interval, stats);
-    const std::optional<double> end = refined_end(search, mine, interval, true);
-    if (!end) return {1, 0};
-    t1 = *end;
-  }
-  return {t0, t1};
-}
+/// One end of one interval to refine, and what its refinement found.
+struct EndTask {
+  std::size_t interval = 0;
+  bool last = false;  ///< the end (else the start)
+  std::optional<double> refined;
+  DetectionStats stats;
+};
 
 }  // namespace
 
@@ -142,9 +129,38 @@ void refine_interval_ends(const scene::Reconfigurable& scene, const BodyTrees& t
   for (const CollisionInterval& g : groups)
     if (!g.possible) definite.push_back(g);
   const std::vector<CollisionInterval> intervals = consolidate(definite, {});
+  // Every end that can move (a start after 0, an end before 1, of an interval that has groups
+  // of its own) is re-detected on its own, all of them in parallel: each depends on the
+  // groups alone.
+  std::vector<std::vector<const CollisionInterval*>> mine(intervals.size());
+  std::vector<EndTask> tasks;
+  for (std::size_t i = 0; i < intervals.size(); ++i) {
+    mine[i] = groups_of(groups, intervals[i]);
+    if (mine[i].empty() || intervals[i].t0 == intervals[i].t1) continue;
+    if (intervals[i].t0 > 0) tasks.push_back({i, false, {}, {}});
+    if (intervals[i].t1 < 1) tasks.push_back({i, true, {}, {}});
+  }
+  tbb::parallel_for(std::size_t{0}, tasks.size(), [&](std::size_t k) {
+    EndTask& task = tasks[k];
+    EndSearch search(scene, trees, proxies, options, intervals[task.interval], task.stats);
+    task.refined = refined_end(search, mine[task.interval], intervals[task.interval], task.last);
+  });
+  // The refined [t0, t1] of each interval (t0 > t1: no interference at all).
   std::vector<std::pair<double, double>> ends;
-  for (const CollisionInterval& interval : intervals)
-    ends.push_back(refined(scene, trees, proxies, options, groups, interval, stats));
+  for (const CollisionInterval& interval : intervals) ends.push_back({interval.t0, interval.t1});
+  std::vector<bool> free(intervals.size(), false);  // a start with no interference after it
+  for (const EndTask& task : tasks) {
+    if (task.last && free[task.interval]) continue;  // as if never searched: nothing to refine
+    stats += task.stats;
+    if (!task.refined) {
+      ends[task.interval] = {1, 0};
+      free[task.interval] = !task.last;
+    } else if (task.last) {
+      ends[task.interval].second = *task.refined;
+    } else {
+      ends[task.interval].first = *task.refined;
+    }
+  }
   for (CollisionInterval& g : groups) {
     if (g.possible) continue;
     for (std::size_t i = 0; i < intervals.size(); ++i) {

@@ -25,7 +25,8 @@ inline constexpr double kEndTolerance = kIntervalEndTolerance;
 /// come within the narrow phase's distance tolerance. Ends alike. The windows re-detected are
 /// the groups' spans, so the refined ends depend on the groups alone (an update refines as a
 /// detection from scratch does). In conservative mode nothing is refined: its ends must cover
-/// the true motion's, which the proxies' re-detection would not. Adds the re-detections' work to `stats` (`end_refinements`).
+/// the true motion's, which the proxies' re-detection would not. The ends are re-detected in
+/// parallel, each on its own. Adds the re-detections' work to `stats` (`end_refinements`).
 void refine_interval_ends(const scene::Reconfigurable& scene, const BodyTrees& trees,
                           const std::vector<PartProxy>& proxies, const DetectorOptions& options,
                           std::vector<CollisionInterval>& groups, DetectionStats& stats);
