@@ -12,6 +12,8 @@
 #include "interval_kinds.h"
 #include "keys.h"
 #include "panel_window.h"
+#include "status_bar.h"
+#include "timeline_panel.h"
 #include "reconfig/common/input_error.h"
 #include "reconfig/view/saved_camera.h"
 #include "reconfig/view/scene_bounds.h"
@@ -28,7 +30,21 @@ collision::CollisionServiceOptions editor_collision_options() {
   return options;
 }
 
-Studio::Studio(StudioOptions options) : options_(std::move(options)), renderer_(render::RendererOptions{0}) {}
+/// The panels' own state (each panel's header says what it owns), held here so that studio.h
+/// does not include their headers: changing one panel recompiles its users only.
+struct Studio::Panels {
+  TimelinePanel timeline;
+  StatusBar status_bar;
+};
+
+Studio::Studio(StudioOptions options)
+    : options_(std::move(options)), renderer_(render::RendererOptions{0}), panels_(std::make_unique<Panels>()) {}
+
+Studio::~Studio() = default;
+
+TimelinePanel& Studio::timeline() { return panels_->timeline; }
+StatusBar& Studio::status_bar() { return panels_->status_bar; }
+bool Studio::status_window_open() const { return panels_->status_bar.window_open(); }
 
 bool Studio::open(const fs::path& file) {
   if (refuse_while_linkage_unsaved(file)) return false;
@@ -80,7 +96,7 @@ void Studio::reset_view_for_new_document() {
   selected_key_.reset();
   gizmo_drag_.reset();
   drag_preview_.reset();
-  key_drag_.reset();
+  timeline().cancel_drag();
   if (hint_job_) hint_job_->wait();  // it reads the shapes of the design being closed
   hint_job_.reset();
   hint_.reset();  // hints and resolutions belong to the design they were computed for
@@ -100,8 +116,7 @@ void Studio::reset_view_for_new_document() {
 void Studio::set_status(std::string message, bool error) {
   status_ = std::move(message);
   status_is_error_ = error;
-  status_window_open_ = false;
-  status_window_due_ = error;
+  status_bar().message_changed(error);
 }
 
 bool Studio::recover_autosave() {
@@ -177,13 +192,13 @@ void Studio::frame(std::chrono::steady_clock::time_point now) {
   draw_state_graph();
   draw_inspector();
   draw_viewport();
-  draw_timeline();
+  timeline().draw(*this);
   linkage_panel_.draw(*this);  // after the timeline: a linkage opened alone covers it
   pip_.update(*this);
   pip_.draw(*this);
   shaping_.update(*this);
   shaping_.draw(*this);
-  draw_status_bar();
+  status_bar().draw(*this);
   draw_modals();
   draw_collision_settings();
   if (document_) {
@@ -401,68 +416,7 @@ std::optional<ImVec2> Studio::viewport_point(const Eigen::Vector3d& world) const
                 layout_.viewport_min.y + static_cast<float>(projected->pixel.y())};
 }
 
-// ---- status bar and dialogs -----------------------------------------------------------------
-
-namespace {
-
-/// `text` cut to fit in `width` pixels, ending in "..." when cut.
-std::string fitted(const std::string& text, float width) {
-  if (ImGui::CalcTextSize(text.c_str()).x <= width) return text;
-  std::size_t low = 0, high = text.size();
-  while (low < high) {
-    const std::size_t middle = (low + high + 1) / 2;
-    if (ImGui::CalcTextSize((text.substr(0, middle) + "...").c_str()).x <= width) low = middle;
-    else high = middle - 1;
-  }
-  while (low > 0 && (static_cast<unsigned char>(text[low]) & 0xC0) == 0x80) --low;  // not inside a character
-  return text.substr(0, low) + "...";
-}
-
-}  // namespace
-
-void Studio::draw_status_bar() {
-  const ImGuiIO& io = ImGui::GetIO();
-  const float height = status_bar_height();
-  ImGui::SetNextWindowPos({0, io.DisplaySize.y - height});
-  ImGui::SetNextWindowSize({io.DisplaySize.x, height});
-  ImGui::Begin("##status", nullptr,
-               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
-                   ImGuiWindowFlags_NoBringToFrontOnFocus);
-  const std::string line = collision_summary();
-  // The status gets the room left of the collision line; a longer one is cut, and its whole
-  // text is a click away (an error opens it by itself).
-  const float line_x = std::max(ImGui::GetWindowWidth() - ImGui::CalcTextSize(line.c_str()).x - 12, 300.0f);
-  const float more_width = ImGui::CalcTextSize("more").x + 3 * ImGui::GetStyle().FramePadding.x;
-  const std::string shown = fitted(status_, line_x - ImGui::GetCursorPosX() - more_width - 16);
-  if (status_is_error_) ImGui::TextColored({0.8f, 0.1f, 0.1f, 1}, "%s", shown.c_str());
-  else ImGui::TextUnformatted(shown.c_str());
-  if (shown != status_) {
-    ImGui::SameLine();
-    if (ImGui::SmallButton("more")) status_window_open_ = true;
-    status_window_open_ = status_window_open_ || status_window_due_;
-  }
-  status_window_due_ = false;
-  if (!line.empty()) {
-    ImGui::SameLine(line_x);
-    ImGui::TextUnformatted(line.c_str());
-  }
-  ImGui::End();
-  draw_status_window();
-}
-
-void Studio::draw_status_window() {
-  if (!status_window_open_) return;
-  const ImGuiIO& io = ImGui::GetIO();
-  ImGui::SetNextWindowPos({io.DisplaySize.x * 0.5f, io.DisplaySize.y * 0.5f}, ImGuiCond_Appearing, {0.5f, 0.5f});
-  ImGui::SetNextWindowSize({std::min(640.0f, io.DisplaySize.x - 40), 0}, ImGuiCond_Appearing);
-  if (ImGui::Begin(status_is_error_ ? "Error" : "Message", &status_window_open_, ImGuiWindowFlags_NoSavedSettings)) {
-    ImGui::TextWrapped("%s", status_.c_str());
-    if (ImGui::Button("Copy")) ImGui::SetClipboardText(status_.c_str());
-    ImGui::SameLine();
-    if (ImGui::Button("Close")) status_window_open_ = false;
-  }
-  ImGui::End();
-}
+// ---- dialogs -------------------------------------------------------------------------------
 
 void Studio::draw_modals() {
   if (!recovery_candidate_.empty()) ImGui::OpenPopup("Recover unsaved work?");

@@ -1,10 +1,12 @@
 #pragma once
 /// @file
 /// The studio's UI: one object that owns the open document and everything the panels share
-/// (open transitions, current time, selection, camera, drags), builds one ImGui frame at a
-/// time, and turns what the user does into scene commands. Panels live in their own files
-/// (viewport_panel.cpp, timeline_panel.cpp, state_graph_panel.cpp, inspector_panel.cpp,
-/// menu_bar.cpp); scripts and tests drive the same actions and read the same layout.
+/// (open transitions, current time, selection, camera, status, layout), builds one ImGui frame
+/// at a time, and turns what the user does into scene commands. Each panel is an object of its
+/// own holding the state only it uses, with a `draw(Studio&)` (timeline_panel.h, status_bar.h,
+/// pip_panel.h, ...); the studio holds them apart (Studio::Panels, defined in studio.cpp), so
+/// this header does not include theirs. Scripts and tests drive the same actions and read the
+/// same layout.
 
 #include <imgui.h>
 
@@ -38,6 +40,9 @@
 #include "reconfig/view/camera.h"
 
 namespace reconfig::studio {
+
+class StatusBar;
+class TimelinePanel;
 
 /// A key of the selected part's track on the timeline.
 struct KeyRef {
@@ -75,6 +80,7 @@ class Studio {
  public:
   /// Needs the GL context current (the renderer and viewport image live in it).
   explicit Studio(StudioOptions options = {});
+  ~Studio();
 
   // ---- documents -------------------------------------------------------------------------
   /// Opens a scene; on a bad file shows the error (and keeps what was open). If the file has
@@ -235,6 +241,9 @@ class Studio {
   LinkagePanel& linkage_panel() { return linkage_panel_; }
   /// Carving and the swept envelope (shaping_panel.h).
   ShapingPanel& shaping() { return shaping_; }
+  /// The panels held apart (their headers say what each owns).
+  TimelinePanel& timeline();
+  StatusBar& status_bar();
 
   // ---- what the UI shows (for tests and scripts) ----------------------------------------
   int active_transition() const { return active_transition_; }
@@ -244,8 +253,9 @@ class Studio {
   int selected_part() const { return selected_part_; }
   std::optional<KeyRef> selected_key() const { return selected_key_; }
   const std::string& status() const { return status_; }
+  bool status_is_error() const { return status_is_error_; }
   /// Whether the window with the whole status text is open (a status too long for the bar).
-  bool status_window_open() const { return status_window_open_; }
+  bool status_window_open() const;
   const Layout& layout() const { return layout_; }
   view::Camera& camera() { return camera_; }
   /// How far a drag of one pixel turns the view (radians): 30° per 100 px, as Blender's orbit,
@@ -276,13 +286,12 @@ class Studio {
 
  private:
   friend class LinkagePanel;  // its edits and messages go through execute and the status line
+  friend class TimelinePanel;  // the time, the selected key and the rows' layout
   // Panels.
   void draw_menu_bar();
   void draw_state_graph();
   void draw_inspector();
   void draw_viewport();
-  void draw_timeline();
-  void draw_status_bar();
   void draw_modals();
   void draw_collision_settings();
   /// The authoring menus' items and dialogs (authoring_menu.cpp).
@@ -340,7 +349,6 @@ class Studio {
   bool step_history(bool forward);
   void advance_playback(double seconds);
   void set_status(std::string message, bool error = false);
-  void draw_status_window();
 
   StudioOptions options_;
   std::unique_ptr<Document> document_;
@@ -388,10 +396,7 @@ class Studio {
   std::optional<HandleDrag> handle_drag_;
   std::optional<motion::Pose> drag_preview_;
   std::optional<Gizmo> gizmo_;
-  std::optional<KeyRef> key_drag_;
-  double key_drag_time_ = 0;
   bool viewport_dragging_ = false;
-  bool scrubbing_ = false;  ///< the time strip is being dragged
 
   std::optional<std::chrono::steady_clock::time_point> last_frame_;
   std::chrono::steady_clock::time_point now_{};
@@ -399,8 +404,6 @@ class Studio {
   Layout layout_;
   std::string status_;
   bool status_is_error_ = false;
-  bool status_window_open_ = false;  ///< the whole status text in a window
-  bool status_window_due_ = false;   ///< an error not yet shown: open the window if it is cut
   std::filesystem::path recovery_candidate_;
   std::string open_path_input_, save_path_input_;
   bool show_open_dialog_ = false, show_save_as_dialog_ = false, confirm_close_ = false;
@@ -428,6 +431,8 @@ class Studio {
   int graph_menu_state_ = -1, graph_menu_transition_ = -1;  ///< what the graph's right-click menu is for
   std::unique_ptr<std::future<HintView>> hint_job_;  ///< a hint computed in the background
   bool quit_ = false;
+  struct Panels;
+  std::unique_ptr<Panels> panels_;
 };
 
 }  // namespace reconfig::studio

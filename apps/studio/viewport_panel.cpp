@@ -12,6 +12,7 @@
 #include "reconfig/view/ghost_sampling.h"
 #include "reconfig/view/picking.h"
 #include "studio.h"
+#include "timeline_panel.h"
 
 namespace reconfig::studio {
 namespace {
@@ -78,7 +79,7 @@ void Studio::render_viewport_image(int width, int height) {
                         {camera_.target.x(), camera_.target.y(), camera_.target.z(), camera_.distance, camera_.yaw,
                          camera_.pitch, camera_.fov_y, camera_.near_plane, camera_.far_plane},
                         {}, show_ghosts, ghost_count, ghost_spacing, show_intervals};
-  const bool moving = playing_ || gizmo_drag_ || viewport_dragging_ || key_drag_ || scrubbing_ ||
+  const bool moving = playing_ || gizmo_drag_ || viewport_dragging_ || timeline().dragging() ||
                      ImGui::IsMouseDragging(ImGuiMouseButton_Right) || ImGui::IsMouseDragging(ImGuiMouseButton_Middle);
   inputs.detailed = !moving;
   if (hint_) inputs.hint = {hint_->part, static_cast<std::int64_t>(hint_->version)};
