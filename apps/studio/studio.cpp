@@ -8,16 +8,19 @@
 #include <thread>
 #include <utility>
 
+#include "authoring_menu.h"
+#include "collision_settings.h"
 #include "counted.h"
 #include "interval_kinds.h"
 #include "keys.h"
 #include "panel_window.h"
-#include "status_bar.h"
-#include "timeline_panel.h"
 #include "reconfig/common/input_error.h"
 #include "reconfig/view/saved_camera.h"
 #include "reconfig/view/scene_bounds.h"
 #include "reconfig/view/working_side.h"
+#include "state_graph_panel.h"
+#include "status_bar.h"
+#include "timeline_panel.h"
 
 namespace reconfig::studio {
 
@@ -35,6 +38,9 @@ collision::CollisionServiceOptions editor_collision_options() {
 struct Studio::Panels {
   TimelinePanel timeline;
   StatusBar status_bar;
+  StateGraphPanel state_graph;
+  AuthoringMenus authoring;
+  CollisionSettingsWindow collision_settings;
 };
 
 Studio::Studio(StudioOptions options)
@@ -44,7 +50,14 @@ Studio::~Studio() = default;
 
 TimelinePanel& Studio::timeline() { return panels_->timeline; }
 StatusBar& Studio::status_bar() { return panels_->status_bar; }
+StateGraphPanel& Studio::state_graph() { return panels_->state_graph; }
+AuthoringMenus& Studio::authoring() { return panels_->authoring; }
+CollisionSettingsWindow& Studio::collision_settings() { return panels_->collision_settings; }
 bool Studio::status_window_open() const { return panels_->status_bar.window_open(); }
+void Studio::open_authoring_dialog(AuthoringDialog dialog) { authoring().open(std::move(dialog)); }
+const std::optional<AuthoringDialog>& Studio::authoring_dialog() const { return panels_->authoring.dialog(); }
+bool Studio::accept_authoring_dialog(const AuthoringDialog& dialog) { return authoring().accept(*this, dialog); }
+void Studio::show_collision_settings() { collision_settings().show(*this); }
 
 bool Studio::open(const fs::path& file) {
   if (refuse_while_linkage_unsaved(file)) return false;
@@ -189,7 +202,7 @@ void Studio::frame(std::chrono::steady_clock::time_point now) {
   poll_hint();
   handle_shortcuts();
   draw_menu_bar();
-  draw_state_graph();
+  state_graph().draw(*this);
   draw_inspector();
   draw_viewport();
   timeline().draw(*this);
@@ -200,7 +213,7 @@ void Studio::frame(std::chrono::steady_clock::time_point now) {
   shaping_.draw(*this);
   status_bar().draw(*this);
   draw_modals();
-  draw_collision_settings();
+  collision_settings().draw(*this);
   if (document_) {
     std::string problem = document_->autosave_if_due(now, options_.autosave_interval);
     if (!problem.empty()) set_status(std::move(problem), true);
@@ -462,7 +475,7 @@ void Studio::draw_modals() {
   path_dialog("Save scene as", show_save_as_dialog_, save_path_input_,
               [&](const std::string& path) { save_as(path); });
 
-  draw_authoring_dialogs();
+  authoring().draw_dialog(*this);
   if (confirm_close_) ImGui::OpenPopup("Save changes?");
   confirm_close_ = false;
   if (ImGui::BeginPopupModal("Save changes?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {

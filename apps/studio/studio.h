@@ -41,6 +41,9 @@
 
 namespace reconfig::studio {
 
+class AuthoringMenus;
+class CollisionSettingsWindow;
+class StateGraphPanel;
 class StatusBar;
 class TimelinePanel;
 
@@ -120,8 +123,8 @@ class Studio {
   std::optional<ImVec2> graph_state_point(int state) const;
   /// Opens an authoring dialog (what the menu items do) / performs what it asks for (its OK
   /// button), for tests. @return success; a refusal is in the status line
-  void open_authoring_dialog(AuthoringDialog dialog) { authoring_dialog_ = std::move(dialog); }
-  const std::optional<AuthoringDialog>& authoring_dialog() const { return authoring_dialog_; }
+  void open_authoring_dialog(AuthoringDialog dialog);
+  const std::optional<AuthoringDialog>& authoring_dialog() const;
   bool accept_authoring_dialog(const AuthoringDialog& dialog);
 
   // ---- one frame -------------------------------------------------------------------------
@@ -244,6 +247,9 @@ class Studio {
   /// The panels held apart (their headers say what each owns).
   TimelinePanel& timeline();
   StatusBar& status_bar();
+  StateGraphPanel& state_graph();
+  AuthoringMenus& authoring();
+  CollisionSettingsWindow& collision_settings();
 
   // ---- what the UI shows (for tests and scripts) ----------------------------------------
   int active_transition() const { return active_transition_; }
@@ -287,20 +293,13 @@ class Studio {
  private:
   friend class LinkagePanel;  // its edits and messages go through execute and the status line
   friend class TimelinePanel;  // the time, the selected key and the rows' layout
+  friend class StateGraphPanel;  // the state shown and the graph's layout
+  friend class AuthoringMenus;   // the state shown
   // Panels.
   void draw_menu_bar();
-  void draw_state_graph();
   void draw_inspector();
   void draw_viewport();
   void draw_modals();
-  void draw_collision_settings();
-  /// The authoring menus' items and dialogs (authoring_menu.cpp).
-  void draw_file_authoring_items();
-  void draw_design_menu();
-  void draw_authoring_dialogs();
-  /// Right-click menus and node-to-node drags of the state graph (authoring_menu.cpp), given
-  /// where its nodes and badges are drawn.
-  void handle_graph_authoring(const std::vector<ImVec2>& nodes, const std::vector<ImVec2>& badges, float node_radius);
   /// What the view refers to, by name, so a structural edit (or its undo) keeps showing the
   /// same transition, state and part, or something valid (authoring.cpp).
   struct ViewNames {
@@ -407,8 +406,6 @@ class Studio {
   std::filesystem::path recovery_candidate_;
   std::string open_path_input_, save_path_input_;
   bool show_open_dialog_ = false, show_save_as_dialog_ = false, confirm_close_ = false;
-  /// The settings being edited in the Collisions > Settings window, while it is open.
-  std::optional<collision::DetectorOptions> settings_draft_;
   /// Hints and automatic resolution (resolve_panel.cpp).
   std::optional<HintView> hint_;
   resolve::ShapeCache hint_shapes_;
@@ -426,9 +423,6 @@ class Studio {
   std::unique_ptr<AutoResolveJob> auto_resolve_;
   bool auto_resolve_moves_states_ = false;  ///< the inspector's "states may move"
   SculptSettings sculpt_settings_;  ///< sculpt_panel.cpp
-  std::optional<AuthoringDialog> authoring_dialog_;  ///< authoring_menu.cpp: the open dialog
-  std::optional<int> graph_drag_from_;                 ///< a drag from this state's node
-  int graph_menu_state_ = -1, graph_menu_transition_ = -1;  ///< what the graph's right-click menu is for
   std::unique_ptr<std::future<HintView>> hint_job_;  ///< a hint computed in the background
   bool quit_ = false;
   struct Panels;
