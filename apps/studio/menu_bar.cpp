@@ -47,7 +47,7 @@ void Studio::draw_menu_bar() {
     if (ImGui::MenuItem("Settings...")) show_collision_settings();
     if (ImGui::MenuItem("Hint for the selected part", "H", false, document_ && selected_part_ >= 0)) request_hint();
     if (ImGui::MenuItem("Resolve this transition automatically", nullptr, false,
-                        document_ && active_transition_ >= 0 && !auto_resolve_))
+                        document_ && active_transition_ >= 0 && !auto_resolving()))
       start_auto_resolve();
     if (ImGui::MenuItem("Carve...", nullptr, false, document_ && selected_part_ >= 0 && active_transition_ >= 0 &&
                                                         !shaping_.carving()))

@@ -11,6 +11,7 @@
 #include "authoring_menu.h"
 #include "collision_settings.h"
 #include "counted.h"
+#include "inspector_panel.h"
 #include "interval_kinds.h"
 #include "keys.h"
 #include "panel_window.h"
@@ -18,6 +19,7 @@
 #include "reconfig/view/saved_camera.h"
 #include "reconfig/view/scene_bounds.h"
 #include "reconfig/view/working_side.h"
+#include "resolve_panel.h"
 #include "state_graph_panel.h"
 #include "status_bar.h"
 #include "timeline_panel.h"
@@ -41,6 +43,8 @@ struct Studio::Panels {
   StateGraphPanel state_graph;
   AuthoringMenus authoring;
   CollisionSettingsWindow collision_settings;
+  InspectorPanel inspector;
+  ResolvePanel resolve;
 };
 
 Studio::Studio(StudioOptions options)
@@ -53,11 +57,22 @@ StatusBar& Studio::status_bar() { return panels_->status_bar; }
 StateGraphPanel& Studio::state_graph() { return panels_->state_graph; }
 AuthoringMenus& Studio::authoring() { return panels_->authoring; }
 CollisionSettingsWindow& Studio::collision_settings() { return panels_->collision_settings; }
+InspectorPanel& Studio::inspector() { return panels_->inspector; }
+ResolvePanel& Studio::resolve() { return panels_->resolve; }
 bool Studio::status_window_open() const { return panels_->status_bar.window_open(); }
 void Studio::open_authoring_dialog(AuthoringDialog dialog) { authoring().open(std::move(dialog)); }
 const std::optional<AuthoringDialog>& Studio::authoring_dialog() const { return panels_->authoring.dialog(); }
 bool Studio::accept_authoring_dialog(const AuthoringDialog& dialog) { return authoring().accept(*this, dialog); }
 void Studio::show_collision_settings() { collision_settings().show(*this); }
+bool Studio::request_hint() { return resolve().request_hint(*this); }
+bool Studio::slide_along_hint(double amount, bool live) { return resolve().slide_along_hint(*this, amount, live); }
+bool Studio::start_auto_resolve(bool move_times, bool move_states) {
+  return resolve().start_auto_resolve(*this, move_times, move_states);
+}
+void Studio::cancel_auto_resolve() { resolve().cancel_auto_resolve(*this); }
+bool Studio::auto_resolving() const { return panels_->resolve.auto_resolving(); }
+bool Studio::hint_pending() const { return panels_->resolve.hint_pending(); }
+const std::optional<HintView>& Studio::resolution_hint() const { return panels_->resolve.hint(); }
 
 bool Studio::open(const fs::path& file) {
   if (refuse_while_linkage_unsaved(file)) return false;
@@ -110,11 +125,7 @@ void Studio::reset_view_for_new_document() {
   gizmo_drag_.reset();
   drag_preview_.reset();
   timeline().cancel_drag();
-  if (hint_job_) hint_job_->wait();  // it reads the shapes of the design being closed
-  hint_job_.reset();
-  hint_.reset();  // hints and resolutions belong to the design they were computed for
-  if (auto_resolve_) auto_resolve_->cancel = true;
-  auto_resolve_.reset();
+  resolve().reset();  // hints and resolutions belong to the design they were computed for
   // The camera it was saved with, else a view of its working side, framed at the first draw.
   const scene::Reconfigurable& scene = document_->scene();
   frame_pending_ = !scene.view;
@@ -198,12 +209,11 @@ void Studio::frame(std::chrono::steady_clock::time_point now) {
     if (camera_glide_->done(seconds_)) camera_glide_.reset();
   }
   if (playing_) advance_playback(dt);
-  poll_auto_resolve();
-  poll_hint();
+  resolve().update(*this);
   handle_shortcuts();
   draw_menu_bar();
   state_graph().draw(*this);
-  draw_inspector();
+  inspector().draw(*this);
   draw_viewport();
   timeline().draw(*this);
   linkage_panel_.draw(*this);  // after the timeline: a linkage opened alone covers it

@@ -12,10 +12,8 @@
 
 #include <Eigen/Core>
 #include <array>
-#include <atomic>
 #include <chrono>
 #include <filesystem>
-#include <future>
 #include <memory>
 #include <numbers>
 #include <optional>
@@ -27,14 +25,13 @@
 #include "document.h"
 #include "gizmo.h"
 #include "handle_drag.h"
+#include "hint_view.h"
 #include "linkage_panel.h"
 #include "pip_panel.h"
 #include "shaping_panel.h"
 #include "reconfig/render/occlusion_counter.h"
 #include "reconfig/render/render_target.h"
 #include "reconfig/render/renderer.h"
-#include "reconfig/resolve/auto_resolve.h"
-#include "reconfig/resolve/hints.h"
 #include "reconfig/scene/edits.h"
 #include "reconfig/scene/transition_edits.h"
 #include "reconfig/view/camera.h"
@@ -43,6 +40,8 @@ namespace reconfig::studio {
 
 class AuthoringMenus;
 class CollisionSettingsWindow;
+class InspectorPanel;
+class ResolvePanel;
 class StateGraphPanel;
 class StatusBar;
 class TimelinePanel;
@@ -99,6 +98,7 @@ class Studio {
   bool save_as(const std::filesystem::path& file);
   Document* document() { return document_.get(); }
   const Document* document() const { return document_.get(); }
+  const StudioOptions& options() const { return options_; }
 
   // ---- authoring a design (authoring.cpp) -----------------------------------------------
   /// Starts an empty design that will be saved as `file` (one state, "start"); what was open
@@ -188,20 +188,11 @@ class Studio {
   bool start_auto_resolve(bool move_times = true, bool move_states = false);
   /// Cancels a running automatic resolution (nothing is changed).
   void cancel_auto_resolve();
-  bool auto_resolving() const { return auto_resolve_ != nullptr; }
+  bool auto_resolving() const;
   /// A hint is being computed in the background (see StudioOptions::background_hint_triangles).
-  bool hint_pending() const { return hint_job_ != nullptr; }
-  /// The resolution hint on screen: the design version it is for, its part and result.
-  struct HintView {
-    int transition = -1, part = -1;
-    std::uint64_t version = 0;
-    resolve::HintResult result;
-    int steepest = -1;                  ///< index in result.hints, −1 when none
-    scene::KeyframedTrack base;         ///< the part's track when the hint was given
-    double slide = 0;                   ///< the slider's position
-    bool sliding = false;               ///< a slide's edit is applied and may be replaced
-  };
-  const std::optional<HintView>& resolution_hint() const { return hint_; }
+  bool hint_pending() const;
+  /// The resolution hint on screen (hint_view.h).
+  const std::optional<HintView>& resolution_hint() const;
   /// A sculpting stroke for the selected part (sculpt_panel.cpp), in the part's rest frame:
   /// a tool of `shape` at `center` moved by one translation, scaling (about its center) or
   /// rotation (about an axis through its center), mirrored in a coordinate plane if asked.
@@ -250,6 +241,9 @@ class Studio {
   StateGraphPanel& state_graph();
   AuthoringMenus& authoring();
   CollisionSettingsWindow& collision_settings();
+  InspectorPanel& inspector();
+  /// Hints and automatic resolution (the actions above forward there).
+  ResolvePanel& resolve();
 
   // ---- what the UI shows (for tests and scripts) ----------------------------------------
   int active_transition() const { return active_transition_; }
@@ -295,9 +289,10 @@ class Studio {
   friend class TimelinePanel;  // the time, the selected key and the rows' layout
   friend class StateGraphPanel;  // the state shown and the graph's layout
   friend class AuthoringMenus;   // the state shown
+  friend class InspectorPanel;   // playback, and the sculpt section (sculpt_panel.cpp)
+  friend class ResolvePanel;     // its messages in the status line
   // Panels.
   void draw_menu_bar();
-  void draw_inspector();
   void draw_viewport();
   void draw_modals();
   /// What the view refers to, by name, so a structural edit (or its undo) keeps showing the
@@ -311,23 +306,8 @@ class Studio {
   };
   ViewNames remember_view() const;
   void restore_view(const ViewNames& names);
-  /// The inspector's section for hints and automatic resolution (resolve_panel.cpp).
-  void draw_resolve_section();
   /// The inspector's section for sculpting the selected part (sculpt_panel.cpp).
   void draw_sculpt_section();
-  /// The hint's arrows (at translation keys and handles) and arcs (about the pivot, for
-  /// rotation keys), for the viewport's draw list.
-  void add_hint_arrows(render::DrawList& list) const;
-  /// The hint's left/right arrows at the keys whose time it would move, on the timeline rows.
-  void draw_time_hints(ImDrawList* draw) const;
-  /// A hint is drawn only for the design version it was computed for (or slid to).
-  bool hint_is_current() const;
-  /// Takes the result of a finished automatic resolution (each frame).
-  void poll_auto_resolve();
-  /// Takes a hint computed in the background (each frame).
-  void poll_hint();
-  /// Shows a computed hint: the status line and the arrows.
-  void show_hint(HintView view);
   void handle_shortcuts();
 
   // Viewport helpers.
@@ -406,24 +386,7 @@ class Studio {
   std::filesystem::path recovery_candidate_;
   std::string open_path_input_, save_path_input_;
   bool show_open_dialog_ = false, show_save_as_dialog_ = false, confirm_close_ = false;
-  /// Hints and automatic resolution (resolve_panel.cpp).
-  std::optional<HintView> hint_;
-  resolve::ShapeCache hint_shapes_;
-  std::vector<std::shared_ptr<const geometry::Mesh>> hint_shape_meshes_;  ///< what hint_shapes_ was built from
-  struct AutoResolveJob {
-    ~AutoResolveJob() { cancel = true; }  // before the future waits for the thread to end
-    int transition = -1;
-    std::uint64_t version = 0;  ///< of the design it resolves: a result for another is dropped
-    std::atomic<double> progress{0};
-    std::atomic<bool> cancel{false};
-    std::atomic<int> rounds{0};
-    std::atomic<double> energy{0};  ///< the last round's pair's energy after it (shown as it falls)
-    std::future<resolve::AutoResolveResult> result;
-  };
-  std::unique_ptr<AutoResolveJob> auto_resolve_;
-  bool auto_resolve_moves_states_ = false;  ///< the inspector's "states may move"
   SculptSettings sculpt_settings_;  ///< sculpt_panel.cpp
-  std::unique_ptr<std::future<HintView>> hint_job_;  ///< a hint computed in the background
   bool quit_ = false;
   struct Panels;
   std::unique_ptr<Panels> panels_;

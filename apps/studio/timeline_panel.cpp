@@ -9,6 +9,7 @@
 #include "keys.h"
 #include "panel_window.h"
 #include "pip_panel.h"
+#include "resolve_panel.h"
 
 namespace reconfig::studio {
 namespace {
@@ -56,7 +57,7 @@ void TimelinePanel::draw(Studio& studio) {
   const float x = strip.x_of(studio.time_), top = strip.scrub_y;
   draw->AddLine({x, top}, {x, strip.rotation_y + kRowHeight}, IM_COL32(30, 90, 220, 255), 2);
   draw->AddTriangleFilled({x - 6, top}, {x + 6, top}, {x, top + 8}, IM_COL32(30, 90, 220, 255));
-  studio.draw_time_hints(draw);
+  studio.resolve().draw_timeline_hints(draw, studio);
   ImGui::End();
 }
 

@@ -11,6 +11,7 @@
 #include "reconfig/render/scene_draw_list.h"
 #include "reconfig/view/ghost_sampling.h"
 #include "reconfig/view/picking.h"
+#include "resolve_panel.h"
 #include "studio.h"
 #include "timeline_panel.h"
 
@@ -82,7 +83,7 @@ void Studio::render_viewport_image(int width, int height) {
   const bool moving = playing_ || gizmo_drag_ || viewport_dragging_ || timeline().dragging() ||
                      ImGui::IsMouseDragging(ImGuiMouseButton_Right) || ImGui::IsMouseDragging(ImGuiMouseButton_Middle);
   inputs.detailed = !moving;
-  if (hint_) inputs.hint = {hint_->part, static_cast<std::int64_t>(hint_->version)};
+  if (const auto& hint = resolution_hint()) inputs.hint = {hint->part, static_cast<std::int64_t>(hint->version)};
   inputs.envelope = shaping_.envelope_shown();
   if (drag_preview_)
     inputs.preview = {drag_preview_->translation.x(), drag_preview_->translation.y(), drag_preview_->translation.z(),
@@ -160,7 +161,7 @@ void Studio::render_viewport_image(int width, int height) {
       }
     }
   }
-  add_hint_arrows(list);
+  resolve().add_hint_arrows(*this, list);
   shaping_.add_to_draw_list(*this, list);
   renderer_.draw(list, camera_, width, height);
   render::RenderTarget::unbind();
