@@ -23,6 +23,7 @@
 #include "state_graph_panel.h"
 #include "status_bar.h"
 #include "timeline_panel.h"
+#include "viewport_panel.h"
 
 namespace reconfig::studio {
 
@@ -45,6 +46,7 @@ struct Studio::Panels {
   CollisionSettingsWindow collision_settings;
   InspectorPanel inspector;
   ResolvePanel resolve;
+  ViewportPanel viewport;
 };
 
 Studio::Studio(StudioOptions options)
@@ -58,6 +60,8 @@ StateGraphPanel& Studio::state_graph() { return panels_->state_graph; }
 AuthoringMenus& Studio::authoring() { return panels_->authoring; }
 CollisionSettingsWindow& Studio::collision_settings() { return panels_->collision_settings; }
 InspectorPanel& Studio::inspector() { return panels_->inspector; }
+ViewportPanel& Studio::viewport() { return panels_->viewport; }
+std::optional<Gizmo> Studio::gizmo() const { return panels_->viewport.gizmo(); }
 ResolvePanel& Studio::resolve() { return panels_->resolve; }
 bool Studio::status_window_open() const { return panels_->status_bar.window_open(); }
 void Studio::open_authoring_dialog(AuthoringDialog dialog) { authoring().open(std::move(dialog)); }
@@ -122,8 +126,7 @@ void Studio::reset_view_for_new_document() {
   playing_ = false;
   selected_part_ = -1;
   selected_key_.reset();
-  gizmo_drag_.reset();
-  drag_preview_.reset();
+  viewport().cancel_drags();
   timeline().cancel_drag();
   resolve().reset();  // hints and resolutions belong to the design they were computed for
   // The camera it was saved with, else a view of its working side, framed at the first draw.
@@ -214,7 +217,7 @@ void Studio::frame(std::chrono::steady_clock::time_point now) {
   draw_menu_bar();
   state_graph().draw(*this);
   inspector().draw(*this);
-  draw_viewport();
+  viewport().draw(*this);
   timeline().draw(*this);
   linkage_panel_.draw(*this);  // after the timeline: a linkage opened alone covers it
   pip_.update(*this);

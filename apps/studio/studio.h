@@ -24,7 +24,6 @@
 #include "camera_glide.h"
 #include "document.h"
 #include "gizmo.h"
-#include "handle_drag.h"
 #include "hint_view.h"
 #include "linkage_panel.h"
 #include "pip_panel.h"
@@ -45,6 +44,7 @@ class ResolvePanel;
 class StateGraphPanel;
 class StatusBar;
 class TimelinePanel;
+class ViewportPanel;
 
 /// A key of the selected part's track on the timeline.
 struct KeyRef {
@@ -242,6 +242,7 @@ class Studio {
   AuthoringMenus& authoring();
   CollisionSettingsWindow& collision_settings();
   InspectorPanel& inspector();
+  ViewportPanel& viewport();
   /// Hints and automatic resolution (the actions above forward there).
   ResolvePanel& resolve();
 
@@ -271,7 +272,7 @@ class Studio {
   /// The selected part's keyframed track in the open transition, or null.
   const scene::KeyframedTrack* selected_keyframed_track() const;
   /// The gizmo as drawn this frame (for the selected part), if any.
-  std::optional<Gizmo> gizmo() const { return gizmo_; }
+  std::optional<Gizmo> gizmo() const;
   /// Screen position of time t on the scrub strip.
   ImVec2 timeline_point(double t) const;
   /// Screen position of the badge of transition `transition` in the state graph.
@@ -290,10 +291,10 @@ class Studio {
   friend class StateGraphPanel;  // the state shown and the graph's layout
   friend class AuthoringMenus;   // the state shown
   friend class InspectorPanel;   // playback, and the sculpt section (sculpt_panel.cpp)
+  friend class ViewportPanel;    // the camera, renderer and the viewport's layout
   friend class ResolvePanel;     // its messages in the status line
   // Panels.
   void draw_menu_bar();
-  void draw_viewport();
   void draw_modals();
   /// What the view refers to, by name, so a structural edit (or its undo) keeps showing the
   /// same transition, state and part, or something valid (authoring.cpp).
@@ -310,18 +311,6 @@ class Studio {
   void draw_sculpt_section();
   void handle_shortcuts();
 
-  // Viewport helpers.
-  void render_viewport_image(int width, int height);
-  void handle_viewport_mouse(const ImVec2& origin, int width, int height);
-  void draw_gizmo(ImDrawList* draw, const ImVec2& origin, int width, int height);
-  /// Whether a collision box of the selected part is shown at the current time (the gizmo
-  /// then fades, so it does not hide the box).
-  bool selected_part_collides_now() const;
-  /// The handle being dragged at its new place, over the picture (which shows the old one).
-  void draw_handle_drag(ImDrawList* draw, const ImVec2& origin, int width, int height) const;
-  view::Ray mouse_ray(const ImVec2& origin, int width, int height) const;
-  int pick_part(const view::Ray& ray) const;
-
   void reset_view_for_new_document();
   /// What "frame all" frames: the active transition's whole motion, else the active state.
   Eigen::AlignedBox3d shown_bounds() const;
@@ -332,28 +321,6 @@ class Studio {
   StudioOptions options_;
   std::unique_ptr<Document> document_;
   render::Renderer renderer_;
-  render::RenderTarget viewport_image_;
-  /// Everything the viewport picture depends on; an unchanged picture is not drawn again.
-  struct ViewportInputs {
-    const Document* document = nullptr;
-    std::uint64_t version = 0;
-    const collision::CollisionSnapshot* snapshot = nullptr;
-    int transition = -1, state = 0;
-    double time = 0;
-    int selected = -1, width = 0, height = 0;
-    std::array<double, 9> camera{};
-    std::array<double, 7> preview{};
-    bool ghosts = false;
-    int ghost_count = 0;
-    float ghost_spacing = 0;
-    bool intervals = false;
-    bool detailed = true;  ///< full meshes (false: the coarse ones drawn while things move)
-    std::array<std::int64_t, 2> hint{-1, 0};  ///< the hint's part and design version (arrows)
-    bool envelope = false;                     ///< the swept envelope is shown
-    bool operator==(const ViewportInputs& other) const;
-  };
-  std::optional<ViewportInputs> last_viewport_inputs_;
-  bool viewport_pulsing_ = false;  ///< collision boxes on screen: redraw every frame
   view::Camera camera_;
   bool frame_pending_ = true;
   std::optional<CameraGlide> camera_glide_;  ///< a flight to a best view in progress
@@ -369,13 +336,6 @@ class Studio {
   bool playing_ = false;
   int selected_part_ = -1;
   std::optional<KeyRef> selected_key_;
-
-  // Interactions in progress.
-  std::optional<GizmoDrag> gizmo_drag_;
-  std::optional<HandleDrag> handle_drag_;
-  std::optional<motion::Pose> drag_preview_;
-  std::optional<Gizmo> gizmo_;
-  bool viewport_dragging_ = false;
 
   std::optional<std::chrono::steady_clock::time_point> last_frame_;
   std::chrono::steady_clock::time_point now_{};

@@ -159,7 +159,6 @@ void TimelinePanel::draw_scrub(Studio& studio, ImDrawList* draw, const Strip& st
 }
 
 void TimelinePanel::draw_bands(Studio& studio, ImDrawList* draw, const Strip& strip) {
-  const scene::Reconfigurable& scene = studio.document_->scene();
   const float y = strip.bands_y, width = strip.width();
   draw->AddRectFilled({strip.x0, y}, {strip.x1, y + kRowHeight}, IM_COL32(240, 240, 244, 255));
   const auto snapshot = studio.collisions();
@@ -195,10 +194,15 @@ void TimelinePanel::draw_bands(Studio& studio, ImDrawList* draw, const Strip& st
         break;
       }
   }
-  if (!ImGui::IsItemHovered() || !current) return;
-  const double at = strip.t_of(io.MousePos.x);
-  for (const auto& interval : current->intervals)
-    if (std::abs(at - std::clamp(at, interval.t0, interval.t1)) < 4.0 / width) {
+  if (ImGui::IsItemHovered() && current) draw_band_tooltip(studio, *current, strip);
+}
+
+void TimelinePanel::draw_band_tooltip(Studio& studio, const collision::TransitionSnapshot& current,
+                                      const Strip& strip) {
+  const scene::Reconfigurable& scene = studio.document_->scene();
+  const double at = strip.t_of(ImGui::GetIO().MousePos.x);
+  for (const auto& interval : current.intervals)
+    if (std::abs(at - std::clamp(at, interval.t0, interval.t1)) < 4.0 / strip.width()) {
       std::string parts;
       for (const int part : interval.parts) parts += (parts.empty() ? "" : " × ") + scene.parts[part].name;
       ImGui::SetTooltip("%s\nt = %.3f to %.3f%s\nP: show it in the picture-in-picture", parts.c_str(), interval.t0,

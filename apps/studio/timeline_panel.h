@@ -14,6 +14,10 @@
 #include "reconfig/scene/reconfigurable.h"
 #include "studio.h"
 
+namespace reconfig::collision {
+struct TransitionSnapshot;
+}
+
 namespace reconfig::studio {
 
 class TimelinePanel {
@@ -41,6 +45,8 @@ class TimelinePanel {
   void draw_labels(const Studio& studio, ImDrawList* draw, const Strip& strip);
   void draw_scrub(Studio& studio, ImDrawList* draw, const Strip& strip);
   void draw_bands(Studio& studio, ImDrawList* draw, const Strip& strip);
+  /// The hovered band's parts and times; P opens the picture-in-picture on it.
+  void draw_band_tooltip(Studio& studio, const collision::TransitionSnapshot& current, const Strip& strip);
   void draw_keys(Studio& studio, ImDrawList* draw, const Strip& strip);
   /// The selected part's keyframed track in the active transition (null when it has none, or
   /// screw poses, drawn here as dots).
