@@ -4,9 +4,9 @@
 /// (open transitions, current time, selection, camera, status, layout), builds one ImGui frame
 /// at a time, and turns what the user does into scene commands. Each panel is an object of its
 /// own holding the state only it uses, with a `draw(Studio&)` (timeline_panel.h, status_bar.h,
-/// pip_panel.h, ...); the studio holds them apart (Studio::Panels, defined in studio.cpp), so
-/// this header does not include theirs. Scripts and tests drive the same actions and read the
-/// same layout.
+/// viewport_panel.h, ...); the studio holds them apart (Studio::Panels, in studio.cpp), so this
+/// header includes none of theirs but the PIP's, linkage's and shaping's. Scripts and tests drive
+/// the same actions and read the same layout.
 
 #include <imgui.h>
 
