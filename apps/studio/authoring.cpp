@@ -16,6 +16,7 @@
 #include "reconfig/geometry/mesh_check.h"
 #include "reconfig/scene/part_edits.h"
 #include "reconfig/scene/state_edits.h"
+#include "resolve_panel.h"
 #include "studio.h"
 
 namespace reconfig::studio {
@@ -260,9 +261,7 @@ void Studio::restore_view(const ViewNames& names) {
   // changed they may name others, or none.
   const std::array<std::size_t, 3> counts{scene.parts.size(), scene.states.size(), scene.transitions.size()};
   if (counts != names.counts) {
-    if (hint_job_) hint_job_->wait();
-    hint_job_.reset();
-    hint_.reset();
+    resolve().forget_hint();
     pip_.close();
   }
 }

@@ -1,5 +1,4 @@
-// Collisions > Settings: how the collision service detects (tolerance, k-DOP family, box grid,
-// frame length, conservative mode, contact tolerance, touching, clearance), edited in a small window and applied to the open design.
+#include "collision_settings.h"
 
 #include <fmt/format.h>
 
@@ -73,50 +72,59 @@ const collision::DetectorOptions& Studio::detector_options() const {
   return document_ ? document_->detector_options() : options_.collisions.detector;
 }
 
-void Studio::show_collision_settings() { settings_draft_ = detector_options(); }
+void CollisionSettingsWindow::show(const Studio& studio) { draft_ = studio.detector_options(); }
 
-void Studio::draw_collision_settings() {
-  if (!settings_draft_) return;
+namespace {
+
+/// The window's fields over `draft`.
+void draw_fields(collision::DetectorOptions& draft) {
+  ImGui::SetNextItemWidth(160);
+  ImGui::InputDouble("Tolerance", &draft.tolerance, 0, 0, "%.6g");
+  hint("Largest distance between the sampled motion and the true one, in scene units.\n"
+       "Smaller: more time samples, slower detection.");
+  int family = family_index(draft.dop);
+  ImGui::SetNextItemWidth(160);
+  if (ImGui::Combo("Bounding volumes", &family, family_name, nullptr, static_cast<int>(kFamilies.size())))
+    draft.dop = kFamilies[family];
+  hint("The k-DOP family of the spacetime hierarchies: 28 is usually fastest.");
+  double percent = 100 * draft.box_resolution;
+  ImGui::SetNextItemWidth(160);
+  if (ImGui::InputDouble("Box grid (% of part size)", &percent, 0, 0, "%.4g")) draft.box_resolution = percent / 100;
+  hint("Collision boxes are rounded outward to a grid of this size; 0 gives exact boxes (slower on deep overlaps).");
+  ImGui::SetNextItemWidth(160);
+  ImGui::InputDouble("Frame (fraction of a transition)", &draft.frame, 0, 0, "%.4g");
+  hint("The 3D view's boxes cover at most one frame of time each.");
+  ImGui::Checkbox("Conservative", &draft.conservative);
+  hint("Also report near misses that the true motion (between the samples) may turn into collisions:\n"
+       "no collision is ever missed, at the price of some that are not there.");
+  ImGui::Checkbox("Touching collides", &draft.touching_collides);
+  hint("Also report parts that only touch (surfaces within the contact tolerance, interiors not\n"
+       "overlapping beyond it) as collisions: a drawer in its runner, a box on a table.");
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(120);
+  ImGui::InputDouble("Clearance (0: none)", &draft.clearance, 0, 0, "%.6g");
+  hint("Also report, in amber, where two parts come closer than this distance without colliding:\n"
+       "the manufacturing gaps a design needs.");
+  ImGui::SetNextItemWidth(160);
+  ImGui::InputDouble("Contact tolerance (0: default)", &draft.contact, 0, 0, "%.6g");
+  hint("Parts that meet by no more than this distance only touch. 0: 1e-6 of the design's size.");
+}
+
+}  // namespace
+
+void CollisionSettingsWindow::draw(Studio& studio) {
+  if (!draft_) return;
   bool open = true;
-  ImGui::SetNextWindowPos(ImVec2(layout_.viewport_min.x + 24, layout_.viewport_min.y + 48), ImGuiCond_Appearing);
+  const Layout& layout = studio.layout();
+  ImGui::SetNextWindowPos(ImVec2(layout.viewport_min.x + 24, layout.viewport_min.y + 48), ImGuiCond_Appearing);
   if (ImGui::Begin("Collision settings", &open, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse)) {
-    collision::DetectorOptions& draft = *settings_draft_;
-    ImGui::SetNextItemWidth(160);
-    ImGui::InputDouble("Tolerance", &draft.tolerance, 0, 0, "%.6g");
-    hint("Largest distance between the sampled motion and the true one, in scene units.\n"
-         "Smaller: more time samples, slower detection.");
-    int family = family_index(draft.dop);
-    ImGui::SetNextItemWidth(160);
-    if (ImGui::Combo("Bounding volumes", &family, family_name, nullptr, static_cast<int>(kFamilies.size())))
-      draft.dop = kFamilies[family];
-    hint("The k-DOP family of the spacetime hierarchies: 28 is usually fastest.");
-    double percent = 100 * draft.box_resolution;
-    ImGui::SetNextItemWidth(160);
-    if (ImGui::InputDouble("Box grid (% of part size)", &percent, 0, 0, "%.4g")) draft.box_resolution = percent / 100;
-    hint("Collision boxes are rounded outward to a grid of this size; 0 gives exact boxes (slower on deep overlaps).");
-    ImGui::SetNextItemWidth(160);
-    ImGui::InputDouble("Frame (fraction of a transition)", &draft.frame, 0, 0, "%.4g");
-    hint("The 3D view's boxes cover at most one frame of time each.");
-    ImGui::Checkbox("Conservative", &draft.conservative);
-    hint("Also report near misses that the true motion (between the samples) may turn into collisions:\n"
-         "no collision is ever missed, at the price of some that are not there.");
-    ImGui::Checkbox("Touching collides", &draft.touching_collides);
-    hint("Also report parts that only touch (surfaces within the contact tolerance, interiors not\n"
-         "overlapping beyond it) as collisions: a drawer in its runner, a box on a table.");
-    ImGui::SameLine();
-    ImGui::SetNextItemWidth(120);
-    ImGui::InputDouble("Clearance (0: none)", &draft.clearance, 0, 0, "%.6g");
-    hint("Also report, in amber, where two parts come closer than this distance without colliding:\n"
-         "the manufacturing gaps a design needs.");
-    ImGui::SetNextItemWidth(160);
-    ImGui::InputDouble("Contact tolerance (0: default)", &draft.contact, 0, 0, "%.6g");
-    hint("Parts that meet by no more than this distance only touch. 0: 1e-6 of the design's size.");
-    if (ImGui::Button("Apply")) set_detector_options(draft);
+    draw_fields(*draft_);
+    if (ImGui::Button("Apply")) studio.set_detector_options(*draft_);
     ImGui::SameLine();
     if (ImGui::Button("Close")) open = false;
   }
   ImGui::End();
-  if (!open) settings_draft_.reset();
+  if (!open) draft_.reset();
 }
 
 }  // namespace reconfig::studio

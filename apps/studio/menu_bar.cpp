@@ -1,5 +1,6 @@
 // The main menu: File (open, save, save as, quit), Edit (undo, redo), View, Collisions, Transitions.
 
+#include "authoring_menu.h"
 #include "studio.h"
 
 namespace reconfig::studio {
@@ -9,7 +10,7 @@ void Studio::draw_menu_bar() {
   if (ImGui::BeginMenu("File")) {
     if (ImGui::MenuItem("Open...", "Ctrl+O")) show_open_dialog_ = true;
     if (ImGui::MenuItem("Open linkage...")) linkage_panel_.request_open_dialog();
-    draw_file_authoring_items();
+    authoring().draw_file_items(*this);
     if (ImGui::MenuItem("Save", "Ctrl+S", false, document_ != nullptr)) save();
     if (ImGui::MenuItem("Save as...", nullptr, false, document_ != nullptr)) {
       save_path_input_ = document_->file().string();
@@ -28,7 +29,7 @@ void Studio::draw_menu_bar() {
     if (ImGui::MenuItem("Remove key", "Del", false, selected_key_.has_value())) delete_selected_key();
     ImGui::EndMenu();
   }
-  draw_design_menu();
+  authoring().draw_design_menu(*this);
   if (ImGui::BeginMenu("View")) {
     if (ImGui::MenuItem("Frame all", "F")) frame_all();
     ImGui::MenuItem("Ghosts", nullptr, &show_ghosts);
@@ -46,7 +47,7 @@ void Studio::draw_menu_bar() {
     if (ImGui::MenuItem("Settings...")) show_collision_settings();
     if (ImGui::MenuItem("Hint for the selected part", "H", false, document_ && selected_part_ >= 0)) request_hint();
     if (ImGui::MenuItem("Resolve this transition automatically", nullptr, false,
-                        document_ && active_transition_ >= 0 && !auto_resolve_))
+                        document_ && active_transition_ >= 0 && !auto_resolving()))
       start_auto_resolve();
     if (ImGui::MenuItem("Carve...", nullptr, false, document_ && selected_part_ >= 0 && active_transition_ >= 0 &&
                                                         !shaping_.carving()))

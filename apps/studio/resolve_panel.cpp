@@ -1,6 +1,4 @@
-// Resolving collisions in the studio: the hint (H) for the selected part — yellow arrows at its
-// keys, a slider that moves the steepest element along its hint with live collision updates —
-// and automatic resolution of the open transition in the background, as one undoable edit.
+#include "resolve_panel.h"
 
 #include <fmt/format.h>
 
@@ -85,9 +83,9 @@ std::vector<std::unique_ptr<scene::Command>> resolution_edits(const scene::Recon
 namespace {
 
 /// The hint for `part` over `intervals` of `transition` of `scene` (version `version`).
-Studio::HintView compute_hint(const scene::Reconfigurable& scene, resolve::ShapeCache& shapes, int transition, int part,
+HintView compute_hint(const scene::Reconfigurable& scene, resolve::ShapeCache& shapes, int transition, int part,
                               std::uint64_t version, const std::vector<collision::CollisionInterval>& intervals) {
-  Studio::HintView view;
+  HintView view;
   view.transition = transition;
   view.part = part;
   view.version = version;
@@ -112,71 +110,74 @@ int hinted_triangles(const scene::Reconfigurable& scene, int part,
 
 }  // namespace
 
-bool Studio::request_hint() {
-  if (!document_ || active_transition_ < 0 || selected_part_ < 0) {
-    set_status("hint: select a part in an open transition first", true);
+bool ResolvePanel::request_hint(Studio& studio) {
+  const int transition = studio.active_transition(), part = studio.selected_part();
+  if (!studio.document() || transition < 0 || part < 0) {
+    studio.set_status("hint: select a part in an open transition first", true);
     return false;
   }
   if (hint_job_) {
-    set_status("hint: still computing the last one");
+    studio.set_status("hint: still computing the last one");
     return false;
   }
-  const auto snapshot = collisions();
+  const Document& document = *studio.document();
+  const auto snapshot = studio.collisions();
   const std::vector<collision::CollisionInterval> intervals =
-      snapshot ? intervals_of(*snapshot, active_transition_, selected_part_) : std::vector<collision::CollisionInterval>{};
-  const scene::Reconfigurable& scene = document_->scene();
+      snapshot ? intervals_of(*snapshot, transition, part) : std::vector<collision::CollisionInterval>{};
+  const scene::Reconfigurable& scene = document.scene();
   if (intervals.empty()) {
-    set_status(fmt::format("hint: {} does not collide in this transition", scene.parts[selected_part_].name));
+    studio.set_status(fmt::format("hint: {} does not collide in this transition", scene.parts[part].name));
     hint_.reset();
     return false;
   }
-  if (hint_shape_meshes_ != document_->part_meshes()) {  // the geometry changed: new shapes
+  if (hint_shape_meshes_ != document.part_meshes()) {  // the geometry changed: new shapes
     hint_shapes_ = resolve::ShapeCache();
-    hint_shape_meshes_ = document_->part_meshes();
+    hint_shape_meshes_ = document.part_meshes();
   }
-  if (hinted_triangles(scene, selected_part_, intervals) > options_.background_hint_triangles) {
+  if (hinted_triangles(scene, part, intervals) > studio.options().background_hint_triangles) {
     hint_job_ = std::make_unique<std::future<HintView>>(
-        std::async(std::launch::async, [this, design = document_->shared_scene(), transition = active_transition_,
-                                        part = selected_part_, version = document_->version(), intervals] {
+        std::async(std::launch::async, [this, design = document.shared_scene(), transition, part,
+                                        version = document.version(), intervals] {
           return compute_hint(*design, hint_shapes_, transition, part, version, intervals);
         }));
-    set_status(fmt::format("hint: computing for {}...", scene.parts[selected_part_].name));
+    studio.set_status(fmt::format("hint: computing for {}...", scene.parts[part].name));
     return true;
   }
-  show_hint(compute_hint(scene, hint_shapes_, active_transition_, selected_part_, document_->version(), intervals));
+  show_hint(studio, compute_hint(scene, hint_shapes_, transition, part, document.version(), intervals));
   return hint_->steepest >= 0;
 }
 
-void Studio::poll_hint() {
+void ResolvePanel::poll_hint(Studio& studio) {
   if (!hint_job_ || hint_job_->wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
   HintView view = hint_job_->get();
   hint_job_.reset();
-  if (!document_ || view.version != document_->version()) {
-    set_status("hint dropped: the design changed while it was computed (press H again)");
+  if (!studio.document() || view.version != studio.document()->version()) {
+    studio.set_status("hint dropped: the design changed while it was computed (press H again)");
     return;
   }
-  show_hint(std::move(view));
+  show_hint(studio, std::move(view));
 }
 
-void Studio::show_hint(HintView view) {
-  const std::string& part = document_->scene().parts[view.part].name;
+void ResolvePanel::show_hint(Studio& studio, HintView view) {
+  const std::string& part = studio.document()->scene().parts[view.part].name;
   if (view.steepest < 0) {
-    set_status(fmt::format("hint: {} has no keys to move here (energy {:.3g})", part, view.result.energy));
+    studio.set_status(fmt::format("hint: {} has no keys to move here (energy {:.3g})", part, view.result.energy));
   } else {
-    set_status(fmt::format("hint: move the {} (energy {:.3g}, most severe at t = {:.3f})",
-                           hint_name(view.result.hints[view.steepest]), view.result.energy, view.result.severity_time));
+    studio.set_status(fmt::format("hint: move the {} (energy {:.3g}, most severe at t = {:.3f})",
+                                  hint_name(view.result.hints[view.steepest]), view.result.energy,
+                                  view.result.severity_time));
   }
   hint_ = std::move(view);
 }
 
-bool Studio::slide_along_hint(double amount, bool live) {
-  if (!hint_is_current() || hint_->steepest < 0) {
-    set_status("slide: no hint for the design as it is (press H)", true);
+bool ResolvePanel::slide_along_hint(Studio& studio, double amount, bool live) {
+  if (!hint_is_current(studio) || hint_->steepest < 0) {
+    studio.set_status("slide: no hint for the design as it is (press H)", true);
     return false;
   }
   HintView& view = *hint_;
   const resolve::Hint& hint = view.result.hints[view.steepest];
-  const scene::Reconfigurable& scene = document_->scene();
+  const scene::Reconfigurable& scene = studio.document()->scene();
   const std::string& transition = scene.transitions[view.transition].name;
   const std::string& part = scene.parts[view.part].name;
   std::unique_ptr<scene::Command> command;
@@ -199,24 +200,26 @@ bool Studio::slide_along_hint(double amount, bool live) {
     command = scene::set_rotation_key(transition, part, hint.dof.key, key);
   }
   // The previous position of this slide, if its edit is still the latest.
-  if (view.sliding && document_->version() == view.version) document_->undo();
+  if (view.sliding && studio.document()->version() == view.version) studio.document()->undo();
   view.sliding = false;
-  const bool applied = execute(std::move(command));
+  const bool applied = studio.execute(std::move(command));
   view.sliding = applied && live;
   view.slide = amount;
-  view.version = document_->version();
+  view.version = studio.document()->version();
   return applied;
 }
 
-bool Studio::start_auto_resolve(bool move_times, bool move_states) {
-  if (!document_ || active_transition_ < 0 || auto_resolve_) return false;
+bool ResolvePanel::start_auto_resolve(Studio& studio, bool move_times, bool move_states) {
+  const int transition = studio.active_transition();
+  if (!studio.document() || transition < 0 || auto_resolve_) return false;
+  const Document& document = *studio.document();
   auto job = std::make_unique<AutoResolveJob>();
-  job->transition = active_transition_;
-  job->version = document_->version();
+  job->transition = transition;
+  job->version = document.version();
   AutoResolveJob* state = job.get();
   resolve::AutoResolveRequest request;
-  request.transition = active_transition_;
-  request.detector = document_->detector_options();
+  request.transition = transition;
+  request.detector = document.detector_options();
   request.move_times = move_times;
   request.move_states = move_states;
   request.progress = [state](double fraction) {
@@ -227,48 +230,49 @@ bool Studio::start_auto_resolve(bool move_times, bool move_states) {
     state->rounds = round.round + 1;
     state->energy = round.energy_after;
   };
-  job->result = std::async(std::launch::async, [scene = document_->scene(), request] {
+  job->result = std::async(std::launch::async, [scene = document.scene(), request] {
     return resolve::auto_resolve(scene, request);
   });
   auto_resolve_ = std::move(job);
-  set_status(fmt::format("resolving {} automatically...", document_->scene().transitions[active_transition_].name));
+  studio.set_status(fmt::format("resolving {} automatically...", document.scene().transitions[transition].name));
   return true;
 }
 
-void Studio::cancel_auto_resolve() {
+void ResolvePanel::cancel_auto_resolve(Studio& studio) {
   if (!auto_resolve_) return;
   auto_resolve_->cancel = true;
   auto_resolve_->result.wait();
   auto_resolve_.reset();
-  set_status("automatic resolution cancelled: nothing changed");
+  studio.set_status("automatic resolution cancelled: nothing changed");
 }
 
-void Studio::poll_auto_resolve() {
+void ResolvePanel::poll_auto_resolve(Studio& studio) {
   if (!auto_resolve_ || auto_resolve_->result.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
   const int transition = auto_resolve_->transition;
   const std::uint64_t version = auto_resolve_->version;
   resolve::AutoResolveResult result = auto_resolve_->result.get();
   auto_resolve_.reset();
-  if (!document_ || result.cancelled) return;
-  if (document_->version() != version) {  // edits made meanwhile would be overwritten
-    set_status("automatic resolution dropped: the design changed while it ran (run it again)", true);
+  const Document* document = studio.document();
+  if (!document || result.cancelled) return;
+  if (document->version() != version) {  // edits made meanwhile would be overwritten
+    studio.set_status("automatic resolution dropped: the design changed while it ran (run it again)", true);
     return;
   }
-  const std::string& name = document_->scene().transitions[transition].name;
-  std::vector<std::unique_ptr<scene::Command>> steps = resolution_edits(document_->scene(), result.scene, transition);
+  const std::string& name = document->scene().transitions[transition].name;
+  std::vector<std::unique_ptr<scene::Command>> steps = resolution_edits(document->scene(), result.scene, transition);
   if (steps.empty()) {
-    set_status(fmt::format("automatic resolution of {}: {}; nothing changed", name, result.stopped_because),
-               !result.collision_free);
+    studio.set_status(fmt::format("automatic resolution of {}: {}; nothing changed", name, result.stopped_because),
+                      !result.collision_free);
     return;
   }
   std::string elsewhere;
   for (const auto& [other, intervals] : result.rechecked)
     if (intervals > 0) elsewhere += fmt::format("; {} now has {} collision interval(s)", other, intervals);
   const std::string label = fmt::format("resolve {} automatically", name);
-  if (execute(scene::command_sequence(label, std::move(steps))))
-    set_status(fmt::format("resolved {} automatically in {} rounds: {}{}", name, result.rounds.size(),
-                           result.stopped_because, elsewhere),
-               !result.collision_free || !elsewhere.empty());
+  if (studio.execute(scene::command_sequence(label, std::move(steps))))
+    studio.set_status(fmt::format("resolved {} automatically in {} rounds: {}{}", name, result.rounds.size(),
+                                  result.stopped_because, elsewhere),
+                      !result.collision_free || !elsewhere.empty());
   hint_.reset();
 }
 
@@ -305,13 +309,14 @@ void add_turn_arc(render::DrawList& list, const Eigen::Vector3d& pivot, const Ei
 
 }  // namespace
 
-bool Studio::hint_is_current() const {
-  return document_ && hint_ && hint_->transition == active_transition_ && hint_->version == document_->version();
+bool ResolvePanel::hint_is_current(const Studio& studio) const {
+  const Document* document = studio.document();
+  return document && hint_ && hint_->transition == studio.active_transition() && hint_->version == document->version();
 }
 
-void Studio::add_hint_arrows(render::DrawList& list) const {
-  if (!hint_is_current()) return;  // after another edit the arrows would point from old places
-  const scene::Reconfigurable& scene = document_->scene();
+void ResolvePanel::add_hint_arrows(const Studio& studio, render::DrawList& list) const {
+  if (!hint_is_current(studio)) return;  // after another edit the arrows would point from old places
+  const scene::Reconfigurable& scene = studio.document()->scene();
   const scene::Part& part = scene.parts[hint_->part];
   const double length = 0.35 * geometry::bounding_box(part.mesh.V).diagonal().norm();
   const scene::KeyframedTrack* track = scene.keyframed_track(hint_->transition, hint_->part);
@@ -341,8 +346,8 @@ void Studio::add_hint_arrows(render::DrawList& list) const {
   }
 }
 
-void Studio::draw_time_hints(ImDrawList* draw) const {
-  if (!hint_is_current()) return;
+void ResolvePanel::draw_timeline_hints(ImDrawList* draw, const Studio& studio) const {
+  if (!hint_is_current(studio)) return;
   for (int i = 0; i < static_cast<int>(hint_->result.hints.size()); ++i) {
     const resolve::Hint& hint = hint_->result.hints[i];
     if (hint.dof.kind != resolve::DofKind::kTime || hint.slope >= 0) continue;
@@ -350,7 +355,8 @@ void Studio::draw_time_hints(ImDrawList* draw) const {
     const std::size_t keys = translation ? hint_->base.translation.size() : hint_->base.rotation.size();
     if (hint.dof.key >= static_cast<int>(keys)) continue;
     const double t = translation ? hint_->base.translation[hint.dof.key].time : hint_->base.rotation[hint.dof.key].time;
-    const float x = timeline_point(t).x, y = translation ? layout_.translation_row_y : layout_.rotation_row_y;
+    const Layout& layout = studio.layout();
+    const float x = studio.timeline_point(t).x, y = translation ? layout.translation_row_y : layout.rotation_row_y;
     const float side = hint.direction[0] > 0 ? 1.0f : -1.0f;  // later or earlier
     const ImU32 color = i == hint_->steepest ? IM_COL32(255, 210, 0, 255) : IM_COL32(240, 228, 115, 255);
     draw->AddTriangleFilled({x + side * 9, y - 6}, {x + side * 9, y + 6}, {x + side * 19, y}, color);
@@ -358,36 +364,61 @@ void Studio::draw_time_hints(ImDrawList* draw) const {
   }
 }
 
-void Studio::draw_resolve_section() {
-  if (!document_ || active_transition_ < 0) return;
+void ResolvePanel::forget_hint() {
+  if (hint_job_) hint_job_->wait();
+  hint_job_.reset();
+  hint_.reset();
+}
+
+void ResolvePanel::reset() {
+  forget_hint();
+  if (auto_resolve_) auto_resolve_->cancel = true;
+  auto_resolve_.reset();
+}
+
+void ResolvePanel::update(Studio& studio) {
+  poll_auto_resolve(studio);
+  poll_hint(studio);
+}
+
+void ResolvePanel::draw(Studio& studio) {
+  if (!studio.document() || studio.active_transition() < 0) return;
   ImGui::Separator();
-  if (ImGui::Button("Hint (H)")) request_hint();
+  if (ImGui::Button("Hint (H)")) request_hint(studio);
   ImGui::SameLine();
+  draw_auto_resolve(studio);
+  if (!hint_ || hint_->transition != studio.active_transition()) return;
+  if (!hint_is_current(studio)) {
+    ImGui::TextDisabled("the design changed: press H for a new hint");
+    return;
+  }
+  const scene::Reconfigurable& scene = studio.document()->scene();
+  ImGui::Text("hint for %s: energy %.3g", scene.parts[hint_->part].name.c_str(), hint_->result.energy);
+  if (hint_->steepest >= 0) draw_slider(studio);
+}
+
+void ResolvePanel::draw_auto_resolve(Studio& studio) {
   if (auto_resolve_) {
     ImGui::Text("resolving: round %d (energy %.3g), %.0f %%", auto_resolve_->rounds.load(), auto_resolve_->energy.load(),
                 100 * auto_resolve_->progress.load());
     ImGui::SameLine();
-    if (ImGui::Button("Cancel")) cancel_auto_resolve();
+    if (ImGui::Button("Cancel")) cancel_auto_resolve(studio);
   } else {
-    if (ImGui::Button("Resolve automatically")) start_auto_resolve(true, auto_resolve_moves_states_);
+    if (ImGui::Button("Resolve automatically")) start_auto_resolve(studio, true, auto_resolve_moves_states_);
     ImGui::SameLine();
     ImGui::Checkbox("states may move", &auto_resolve_moves_states_);
   }
-  if (!hint_ || hint_->transition != active_transition_) return;
-  if (!hint_is_current()) {
-    ImGui::TextDisabled("the design changed: press H for a new hint");
-    return;
-  }
-  const scene::Reconfigurable& scene = document_->scene();
-  ImGui::Text("hint for %s: energy %.3g", scene.parts[hint_->part].name.c_str(), hint_->result.energy);
-  if (hint_->steepest < 0) return;
+}
+
+void ResolvePanel::draw_slider(Studio& studio) {
+  const scene::Reconfigurable& scene = studio.document()->scene();
   const resolve::Hint& hint = hint_->result.hints[hint_->steepest];
   const float reach = static_cast<float>(slide_reach(hint, scene.parts[hint_->part].mesh));
   float slide = static_cast<float>(hint_->slide);
   ImGui::TextWrapped("slide the %s along its hint (yellow arrow):", hint_name(hint).c_str());
   ImGui::SliderFloat("##along the hint", &slide, -reach, reach, "%.3f");
   const bool changed = ImGui::IsItemEdited(), released = ImGui::IsItemDeactivatedAfterEdit();
-  if (changed || released) slide_along_hint(slide, !released);
+  if (changed || released) slide_along_hint(studio, slide, !released);
   ImGui::TextDisabled("release: one undoable edit");
 }
 

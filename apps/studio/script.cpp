@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "authoring_script.h"
+#include "handle_drag.h"
 #include "keys.h"
 #include "sculpt_script.h"
 #include "shaping_script.h"

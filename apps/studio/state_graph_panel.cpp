@@ -1,6 +1,4 @@
-// The state graph: states as nodes on a circle, transitions as arrows with a collision badge
-// (count of maximal intervals; grey while being detected). Clicking a badge or edge opens the
-// transition's timeline; clicking a state shows it.
+#include "state_graph_panel.h"
 
 #include <fmt/format.h>
 
@@ -15,12 +13,6 @@ namespace reconfig::studio {
 namespace {
 
 constexpr float kLoopRadius = 14;
-
-struct GraphGeometry {
-  std::vector<ImVec2> nodes;   ///< per state
-  std::vector<ImVec2> badges;  ///< per transition
-  float node_radius = 18;
-};
 
 GraphGeometry graph_geometry(const scene::Reconfigurable& scene, ImVec2 min, ImVec2 max) {
   GraphGeometry geometry;
@@ -66,28 +58,37 @@ std::optional<ImVec2> Studio::graph_state_point(int state) const {
   return graph_geometry(document_->scene(), layout_.graph_min, layout_.graph_max).nodes[state];
 }
 
-void Studio::draw_state_graph() {
+void StateGraphPanel::draw(Studio& studio) {
   const PanelRects rects = current_panel_rects();
   begin_panel("State graph", rects.graph_pos, rects.graph_size);
-  if (!document_) {
+  if (!studio.document_) {
     ImGui::End();
     return;
   }
-  const scene::Reconfigurable& scene = document_->scene();
   const ImVec2 min = ImGui::GetCursorScreenPos(), available = ImGui::GetContentRegionAvail();
   const ImVec2 max{min.x + available.x, min.y + available.y};
-  layout_.graph_min = min;
-  layout_.graph_max = max;
-  const GraphGeometry geometry = graph_geometry(scene, min, max);
+  studio.layout_.graph_min = min;
+  studio.layout_.graph_max = max;
+  const GraphGeometry geometry = graph_geometry(studio.document_->scene(), min, max);
   ImDrawList* draw = ImGui::GetWindowDrawList();
-  const auto snapshot = collisions();
-  const ImU32 plate = ImGui::GetColorU32(ImGuiCol_WindowBg);
+  draw_edges(studio, draw, geometry);
+  // Badges and labels after every edge, the labels on plates of the panel's colour: no edge is
+  // drawn through a label.
+  draw_badges(studio, draw, geometry);
+  draw_nodes(studio, draw, geometry);
+  ImGui::InvisibleButton("##graph", {std::max(available.x, 1.0f), std::max(available.y, 1.0f)});
+  handle_clicks(studio, geometry);
+  handle_authoring(studio, geometry);
+  ImGui::End();
+}
 
+void StateGraphPanel::draw_edges(const Studio& studio, ImDrawList* draw, const GraphGeometry& geometry) const {
+  const scene::Reconfigurable& scene = studio.document_->scene();
   for (int k = 0; k < static_cast<int>(scene.transitions.size()); ++k) {
     const scene::Transition& transition = scene.transitions[k];
     const ImVec2 a = geometry.nodes[scene.find_state(transition.from)], b = geometry.nodes[scene.find_state(transition.to)];
     const ImVec2 m = geometry.badges[k];
-    const bool active = k == active_transition_;
+    const bool active = k == studio.active_transition_;
     const ImU32 color = active ? IM_COL32(30, 90, 220, 255) : IM_COL32(90, 90, 100, 255);
     if (transition.from == transition.to) {
       const float dx = m.x - a.x, dy = m.y - a.y, length = std::max(std::sqrt(dx * dx + dy * dy), 1.0f);
@@ -99,8 +100,12 @@ void Studio::draw_state_graph() {
                                active ? 3.0f : 1.5f);
     }
   }
-  // Badges and labels after every edge, the labels on plates of the panel's colour: no edge is
-  // drawn through a label.
+}
+
+void StateGraphPanel::draw_badges(const Studio& studio, ImDrawList* draw, const GraphGeometry& geometry) const {
+  const scene::Reconfigurable& scene = studio.document_->scene();
+  const auto snapshot = studio.collisions();
+  const ImU32 plate = ImGui::GetColorU32(ImGuiCol_WindowBg);
   for (int k = 0; k < static_cast<int>(scene.transitions.size()); ++k) {
     const scene::Transition& transition = scene.transitions[k];
     const ImVec2 m = geometry.badges[k];
@@ -109,7 +114,7 @@ void Studio::draw_state_graph() {
     if (snapshot)
       for (const auto& t : snapshot->transitions)
         if (t.transition == k) current = &t;
-    const bool known = current && current->up_to_date && snapshot->version == document_->version();
+    const bool known = current && current->up_to_date && snapshot->version == studio.document_->version();
     // Red with the number of collisions; amber with the number of clearance intervals when
     // there are only those; green when free.
     const std::size_t clearances = current ? clearance_count(current->intervals) : 0;
@@ -124,34 +129,36 @@ void Studio::draw_state_graph() {
     draw->AddText({m.x - size.x / 2, m.y - size.y / 2}, IM_COL32(255, 255, 255, 255), text.c_str());
     const ImVec2 name_size = ImGui::CalcTextSize(transition.name.c_str()), at{m.x + 14, m.y - name_size.y / 2};
     draw->AddRectFilled({at.x - 2, at.y - 1}, {at.x + name_size.x + 2, at.y + name_size.y + 1}, plate, 3);
-    draw->AddText(at, k == active_transition_ ? IM_COL32(20, 40, 110, 255) : IM_COL32(60, 60, 70, 255),
+    draw->AddText(at, k == studio.active_transition_ ? IM_COL32(20, 40, 110, 255) : IM_COL32(60, 60, 70, 255),
                   transition.name.c_str());
   }
+}
+
+void StateGraphPanel::draw_nodes(const Studio& studio, ImDrawList* draw, const GraphGeometry& geometry) const {
+  const scene::Reconfigurable& scene = studio.document_->scene();
   for (int s = 0; s < static_cast<int>(scene.states.size()); ++s) {
     const ImVec2 p = geometry.nodes[s];
-    const bool shown = active_transition_ < 0 && s == active_state_;
+    const bool shown = studio.active_transition_ < 0 && s == studio.active_state_;
     draw->AddCircleFilled(p, geometry.node_radius, shown ? IM_COL32(200, 220, 255, 255) : IM_COL32(250, 250, 252, 255));
     draw->AddCircle(p, geometry.node_radius, IM_COL32(60, 60, 70, 255), 0, 2);
     const ImVec2 size = ImGui::CalcTextSize(scene.states[s].name.c_str());
     draw->AddText({p.x - size.x / 2, p.y + geometry.node_radius + 2}, IM_COL32(30, 30, 40, 255),
                   scene.states[s].name.c_str());
   }
+}
 
-  ImGui::InvisibleButton("##graph", {std::max(available.x, 1.0f), std::max(available.y, 1.0f)});
-  if (ImGui::IsItemClicked()) {
-    const ImVec2 mouse = ImGui::GetIO().MousePos;
-    const auto near = [&](ImVec2 p, float r) { return std::hypot(mouse.x - p.x, mouse.y - p.y) <= r; };
-    for (int k = 0; k < static_cast<int>(geometry.badges.size()); ++k)
-      if (near(geometry.badges[k], 14)) open_transition(k);
-    for (int s = 0; s < static_cast<int>(geometry.nodes.size()); ++s)
-      if (near(geometry.nodes[s], geometry.node_radius)) {
-        active_transition_ = -1;
-        active_state_ = s;
-        selected_key_.reset();
-      }
-  }
-  handle_graph_authoring(geometry.nodes, geometry.badges, geometry.node_radius);
-  ImGui::End();
+void StateGraphPanel::handle_clicks(Studio& studio, const GraphGeometry& geometry) {
+  if (!ImGui::IsItemClicked()) return;
+  const ImVec2 mouse = ImGui::GetIO().MousePos;
+  const auto near = [&](ImVec2 p, float r) { return std::hypot(mouse.x - p.x, mouse.y - p.y) <= r; };
+  for (int k = 0; k < static_cast<int>(geometry.badges.size()); ++k)
+    if (near(geometry.badges[k], 14)) studio.open_transition(k);
+  for (int s = 0; s < static_cast<int>(geometry.nodes.size()); ++s)
+    if (near(geometry.nodes[s], geometry.node_radius)) {
+      studio.active_transition_ = -1;
+      studio.active_state_ = s;
+      studio.selected_key_.reset();
+    }
 }
 
 }  // namespace reconfig::studio

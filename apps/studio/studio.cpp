@@ -8,7 +8,10 @@
 #include <thread>
 #include <utility>
 
+#include "authoring_menu.h"
+#include "collision_settings.h"
 #include "counted.h"
+#include "inspector_panel.h"
 #include "interval_kinds.h"
 #include "keys.h"
 #include "panel_window.h"
@@ -16,6 +19,11 @@
 #include "reconfig/view/saved_camera.h"
 #include "reconfig/view/scene_bounds.h"
 #include "reconfig/view/working_side.h"
+#include "resolve_panel.h"
+#include "state_graph_panel.h"
+#include "status_bar.h"
+#include "timeline_panel.h"
+#include "viewport_panel.h"
 
 namespace reconfig::studio {
 
@@ -28,7 +36,47 @@ collision::CollisionServiceOptions editor_collision_options() {
   return options;
 }
 
-Studio::Studio(StudioOptions options) : options_(std::move(options)), renderer_(render::RendererOptions{0}) {}
+/// The panels' own state (each panel's header says what it owns), held here so that studio.h
+/// does not include their headers: changing one panel recompiles its users only.
+struct Studio::Panels {
+  TimelinePanel timeline;
+  StatusBar status_bar;
+  StateGraphPanel state_graph;
+  AuthoringMenus authoring;
+  CollisionSettingsWindow collision_settings;
+  InspectorPanel inspector;
+  ResolvePanel resolve;
+  ViewportPanel viewport;
+};
+
+Studio::Studio(StudioOptions options)
+    : options_(std::move(options)), renderer_(render::RendererOptions{0}), panels_(std::make_unique<Panels>()) {}
+
+Studio::~Studio() = default;
+
+TimelinePanel& Studio::timeline() { return panels_->timeline; }
+StatusBar& Studio::status_bar() { return panels_->status_bar; }
+StateGraphPanel& Studio::state_graph() { return panels_->state_graph; }
+AuthoringMenus& Studio::authoring() { return panels_->authoring; }
+CollisionSettingsWindow& Studio::collision_settings() { return panels_->collision_settings; }
+InspectorPanel& Studio::inspector() { return panels_->inspector; }
+ViewportPanel& Studio::viewport() { return panels_->viewport; }
+std::optional<Gizmo> Studio::gizmo() const { return panels_->viewport.gizmo(); }
+ResolvePanel& Studio::resolve() { return panels_->resolve; }
+bool Studio::status_window_open() const { return panels_->status_bar.window_open(); }
+void Studio::open_authoring_dialog(AuthoringDialog dialog) { authoring().open(std::move(dialog)); }
+const std::optional<AuthoringDialog>& Studio::authoring_dialog() const { return panels_->authoring.dialog(); }
+bool Studio::accept_authoring_dialog(const AuthoringDialog& dialog) { return authoring().accept(*this, dialog); }
+void Studio::show_collision_settings() { collision_settings().show(*this); }
+bool Studio::request_hint() { return resolve().request_hint(*this); }
+bool Studio::slide_along_hint(double amount, bool live) { return resolve().slide_along_hint(*this, amount, live); }
+bool Studio::start_auto_resolve(bool move_times, bool move_states) {
+  return resolve().start_auto_resolve(*this, move_times, move_states);
+}
+void Studio::cancel_auto_resolve() { resolve().cancel_auto_resolve(*this); }
+bool Studio::auto_resolving() const { return panels_->resolve.auto_resolving(); }
+bool Studio::hint_pending() const { return panels_->resolve.hint_pending(); }
+const std::optional<HintView>& Studio::resolution_hint() const { return panels_->resolve.hint(); }
 
 bool Studio::open(const fs::path& file) {
   if (refuse_while_linkage_unsaved(file)) return false;
@@ -78,14 +126,9 @@ void Studio::reset_view_for_new_document() {
   playing_ = false;
   selected_part_ = -1;
   selected_key_.reset();
-  gizmo_drag_.reset();
-  drag_preview_.reset();
-  key_drag_.reset();
-  if (hint_job_) hint_job_->wait();  // it reads the shapes of the design being closed
-  hint_job_.reset();
-  hint_.reset();  // hints and resolutions belong to the design they were computed for
-  if (auto_resolve_) auto_resolve_->cancel = true;
-  auto_resolve_.reset();
+  viewport().cancel_drags();
+  timeline().cancel_drag();
+  resolve().reset();  // hints and resolutions belong to the design they were computed for
   // The camera it was saved with, else a view of its working side, framed at the first draw.
   const scene::Reconfigurable& scene = document_->scene();
   frame_pending_ = !scene.view;
@@ -100,8 +143,7 @@ void Studio::reset_view_for_new_document() {
 void Studio::set_status(std::string message, bool error) {
   status_ = std::move(message);
   status_is_error_ = error;
-  status_window_open_ = false;
-  status_window_due_ = error;
+  status_bar().message_changed(error);
 }
 
 bool Studio::recover_autosave() {
@@ -170,22 +212,21 @@ void Studio::frame(std::chrono::steady_clock::time_point now) {
     if (camera_glide_->done(seconds_)) camera_glide_.reset();
   }
   if (playing_) advance_playback(dt);
-  poll_auto_resolve();
-  poll_hint();
+  resolve().update(*this);
   handle_shortcuts();
   draw_menu_bar();
-  draw_state_graph();
-  draw_inspector();
-  draw_viewport();
-  draw_timeline();
+  state_graph().draw(*this);
+  inspector().draw(*this);
+  viewport().draw(*this);
+  timeline().draw(*this);
   linkage_panel_.draw(*this);  // after the timeline: a linkage opened alone covers it
   pip_.update(*this);
   pip_.draw(*this);
   shaping_.update(*this);
   shaping_.draw(*this);
-  draw_status_bar();
+  status_bar().draw(*this);
   draw_modals();
-  draw_collision_settings();
+  collision_settings().draw(*this);
   if (document_) {
     std::string problem = document_->autosave_if_due(now, options_.autosave_interval);
     if (!problem.empty()) set_status(std::move(problem), true);
@@ -402,68 +443,7 @@ std::optional<ImVec2> Studio::viewport_point(const Eigen::Vector3d& world) const
                 layout_.viewport_min.y + static_cast<float>(projected->pixel.y())};
 }
 
-// ---- status bar and dialogs -----------------------------------------------------------------
-
-namespace {
-
-/// `text` cut to fit in `width` pixels, ending in "..." when cut.
-std::string fitted(const std::string& text, float width) {
-  if (ImGui::CalcTextSize(text.c_str()).x <= width) return text;
-  std::size_t low = 0, high = text.size();
-  while (low < high) {
-    const std::size_t middle = (low + high + 1) / 2;
-    if (ImGui::CalcTextSize((text.substr(0, middle) + "...").c_str()).x <= width) low = middle;
-    else high = middle - 1;
-  }
-  while (low > 0 && (static_cast<unsigned char>(text[low]) & 0xC0) == 0x80) --low;  // not inside a character
-  return text.substr(0, low) + "...";
-}
-
-}  // namespace
-
-void Studio::draw_status_bar() {
-  const ImGuiIO& io = ImGui::GetIO();
-  const float height = status_bar_height();
-  ImGui::SetNextWindowPos({0, io.DisplaySize.y - height});
-  ImGui::SetNextWindowSize({io.DisplaySize.x, height});
-  ImGui::Begin("##status", nullptr,
-               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
-                   ImGuiWindowFlags_NoBringToFrontOnFocus);
-  const std::string line = collision_summary();
-  // The status gets the room left of the collision line; a longer one is cut, and its whole
-  // text is a click away (an error opens it by itself).
-  const float line_x = std::max(ImGui::GetWindowWidth() - ImGui::CalcTextSize(line.c_str()).x - 12, 300.0f);
-  const float more_width = ImGui::CalcTextSize("more").x + 3 * ImGui::GetStyle().FramePadding.x;
-  const std::string shown = fitted(status_, line_x - ImGui::GetCursorPosX() - more_width - 16);
-  if (status_is_error_) ImGui::TextColored({0.8f, 0.1f, 0.1f, 1}, "%s", shown.c_str());
-  else ImGui::TextUnformatted(shown.c_str());
-  if (shown != status_) {
-    ImGui::SameLine();
-    if (ImGui::SmallButton("more")) status_window_open_ = true;
-    status_window_open_ = status_window_open_ || status_window_due_;
-  }
-  status_window_due_ = false;
-  if (!line.empty()) {
-    ImGui::SameLine(line_x);
-    ImGui::TextUnformatted(line.c_str());
-  }
-  ImGui::End();
-  draw_status_window();
-}
-
-void Studio::draw_status_window() {
-  if (!status_window_open_) return;
-  const ImGuiIO& io = ImGui::GetIO();
-  ImGui::SetNextWindowPos({io.DisplaySize.x * 0.5f, io.DisplaySize.y * 0.5f}, ImGuiCond_Appearing, {0.5f, 0.5f});
-  ImGui::SetNextWindowSize({std::min(640.0f, io.DisplaySize.x - 40), 0}, ImGuiCond_Appearing);
-  if (ImGui::Begin(status_is_error_ ? "Error" : "Message", &status_window_open_, ImGuiWindowFlags_NoSavedSettings)) {
-    ImGui::TextWrapped("%s", status_.c_str());
-    if (ImGui::Button("Copy")) ImGui::SetClipboardText(status_.c_str());
-    ImGui::SameLine();
-    if (ImGui::Button("Close")) status_window_open_ = false;
-  }
-  ImGui::End();
-}
+// ---- dialogs -------------------------------------------------------------------------------
 
 void Studio::draw_modals() {
   if (!recovery_candidate_.empty()) ImGui::OpenPopup("Recover unsaved work?");
@@ -509,7 +489,7 @@ void Studio::draw_modals() {
   path_dialog("Save scene as", show_save_as_dialog_, save_path_input_,
               [&](const std::string& path) { save_as(path); });
 
-  draw_authoring_dialogs();
+  authoring().draw_dialog(*this);
   if (confirm_close_) ImGui::OpenPopup("Save changes?");
   confirm_close_ = false;
   if (ImGui::BeginPopupModal("Save changes?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {

@@ -1,19 +1,19 @@
 #pragma once
 /// @file
 /// The studio's UI: one object that owns the open document and everything the panels share
-/// (open transitions, current time, selection, camera, drags), builds one ImGui frame at a
-/// time, and turns what the user does into scene commands. Panels live in their own files
-/// (viewport_panel.cpp, timeline_panel.cpp, state_graph_panel.cpp, inspector_panel.cpp,
-/// menu_bar.cpp); scripts and tests drive the same actions and read the same layout.
+/// (open transitions, current time, selection, camera, status, layout), builds one ImGui frame
+/// at a time, and turns what the user does into scene commands. Each panel is an object of its
+/// own holding the state only it uses, with a `draw(Studio&)` (timeline_panel.h, status_bar.h,
+/// viewport_panel.h, ...); the studio holds them apart (Studio::Panels, in studio.cpp), so this
+/// header includes none of theirs but the PIP's, linkage's and shaping's. Scripts and tests drive
+/// the same actions and read the same layout.
 
 #include <imgui.h>
 
 #include <Eigen/Core>
 #include <array>
-#include <atomic>
 #include <chrono>
 #include <filesystem>
-#include <future>
 #include <memory>
 #include <numbers>
 #include <optional>
@@ -24,7 +24,7 @@
 #include "camera_glide.h"
 #include "document.h"
 #include "gizmo.h"
-#include "handle_drag.h"
+#include "hint_view.h"
 #include "linkage_panel.h"
 #include "pip_panel.h"
 #include "sculpt_panel.h"
@@ -32,13 +32,20 @@
 #include "reconfig/render/occlusion_counter.h"
 #include "reconfig/render/render_target.h"
 #include "reconfig/render/renderer.h"
-#include "reconfig/resolve/auto_resolve.h"
-#include "reconfig/resolve/hints.h"
 #include "reconfig/scene/edits.h"
 #include "reconfig/scene/transition_edits.h"
 #include "reconfig/view/camera.h"
 
 namespace reconfig::studio {
+
+class AuthoringMenus;
+class CollisionSettingsWindow;
+class InspectorPanel;
+class ResolvePanel;
+class StateGraphPanel;
+class StatusBar;
+class TimelinePanel;
+class ViewportPanel;
 
 /// A key of the selected part's track on the timeline.
 struct KeyRef {
@@ -77,6 +84,7 @@ class Studio {
  public:
   /// Needs the GL context current (the renderer and viewport image live in it).
   explicit Studio(StudioOptions options = {});
+  ~Studio();
 
   // ---- documents -------------------------------------------------------------------------
   /// Opens a scene; on a bad file shows the error (and keeps what was open). If the file has
@@ -92,6 +100,7 @@ class Studio {
   bool save_as(const std::filesystem::path& file);
   Document* document() { return document_.get(); }
   const Document* document() const { return document_.get(); }
+  const StudioOptions& options() const { return options_; }
 
   // ---- authoring a design (authoring.cpp) -----------------------------------------------
   /// Starts an empty design that will be saved as `file` (one state, "start"); what was open
@@ -116,8 +125,8 @@ class Studio {
   std::optional<ImVec2> graph_state_point(int state) const;
   /// Opens an authoring dialog (what the menu items do) / performs what it asks for (its OK
   /// button), for tests. @return success; a refusal is in the status line
-  void open_authoring_dialog(AuthoringDialog dialog) { authoring_dialog_ = std::move(dialog); }
-  const std::optional<AuthoringDialog>& authoring_dialog() const { return authoring_dialog_; }
+  void open_authoring_dialog(AuthoringDialog dialog);
+  const std::optional<AuthoringDialog>& authoring_dialog() const;
   bool accept_authoring_dialog(const AuthoringDialog& dialog);
 
   // ---- one frame -------------------------------------------------------------------------
@@ -181,20 +190,11 @@ class Studio {
   bool start_auto_resolve(bool move_times = true, bool move_states = false);
   /// Cancels a running automatic resolution (nothing is changed).
   void cancel_auto_resolve();
-  bool auto_resolving() const { return auto_resolve_ != nullptr; }
+  bool auto_resolving() const;
   /// A hint is being computed in the background (see StudioOptions::background_hint_triangles).
-  bool hint_pending() const { return hint_job_ != nullptr; }
-  /// The resolution hint on screen: the design version it is for, its part and result.
-  struct HintView {
-    int transition = -1, part = -1;
-    std::uint64_t version = 0;
-    resolve::HintResult result;
-    int steepest = -1;                  ///< index in result.hints, −1 when none
-    scene::KeyframedTrack base;         ///< the part's track when the hint was given
-    double slide = 0;                   ///< the slider's position
-    bool sliding = false;               ///< a slide's edit is applied and may be replaced
-  };
-  const std::optional<HintView>& resolution_hint() const { return hint_; }
+  bool hint_pending() const;
+  /// The resolution hint on screen (hint_view.h).
+  const std::optional<HintView>& resolution_hint() const;
   /// Sculpting the selected part (sculpt_panel.h); the settings and stroke by numbers
   /// forwarded for scripts and tests.
   SculptPanel& sculpt() { return sculpt_; }
@@ -221,6 +221,16 @@ class Studio {
   LinkagePanel& linkage_panel() { return linkage_panel_; }
   /// Carving and the swept envelope (shaping_panel.h).
   ShapingPanel& shaping() { return shaping_; }
+  /// The panels held apart (their headers say what each owns).
+  TimelinePanel& timeline();
+  StatusBar& status_bar();
+  StateGraphPanel& state_graph();
+  AuthoringMenus& authoring();
+  CollisionSettingsWindow& collision_settings();
+  InspectorPanel& inspector();
+  ViewportPanel& viewport();
+  /// Hints and automatic resolution (the actions above forward there).
+  ResolvePanel& resolve();
 
   // ---- what the UI shows (for tests and scripts) ----------------------------------------
   int active_transition() const { return active_transition_; }
@@ -230,8 +240,9 @@ class Studio {
   int selected_part() const { return selected_part_; }
   std::optional<KeyRef> selected_key() const { return selected_key_; }
   const std::string& status() const { return status_; }
+  bool status_is_error() const { return status_is_error_; }
   /// Whether the window with the whole status text is open (a status too long for the bar).
-  bool status_window_open() const { return status_window_open_; }
+  bool status_window_open() const;
   const Layout& layout() const { return layout_; }
   view::Camera& camera() { return camera_; }
   /// How far a drag of one pixel turns the view (radians): 30° per 100 px, as Blender's orbit,
@@ -247,7 +258,7 @@ class Studio {
   /// The selected part's keyframed track in the open transition, or null.
   const scene::KeyframedTrack* selected_keyframed_track() const;
   /// The gizmo as drawn this frame (for the selected part), if any.
-  std::optional<Gizmo> gizmo() const { return gizmo_; }
+  std::optional<Gizmo> gizmo() const;
   /// Screen position of time t on the scrub strip.
   ImVec2 timeline_point(double t) const;
   /// Screen position of the badge of transition `transition` in the state graph.
@@ -262,22 +273,15 @@ class Studio {
 
  private:
   friend class LinkagePanel;  // its edits and messages go through execute and the status line
+  friend class TimelinePanel;  // the time, the selected key and the rows' layout
+  friend class StateGraphPanel;  // the state shown and the graph's layout
+  friend class AuthoringMenus;   // the state shown
+  friend class InspectorPanel;   // playback, and the sculpt section (sculpt_panel.cpp)
+  friend class ViewportPanel;    // the camera, renderer and the viewport's layout
+  friend class ResolvePanel;     // its messages in the status line
   // Panels.
   void draw_menu_bar();
-  void draw_state_graph();
-  void draw_inspector();
-  void draw_viewport();
-  void draw_timeline();
-  void draw_status_bar();
   void draw_modals();
-  void draw_collision_settings();
-  /// The authoring menus' items and dialogs (authoring_menu.cpp).
-  void draw_file_authoring_items();
-  void draw_design_menu();
-  void draw_authoring_dialogs();
-  /// Right-click menus and node-to-node drags of the state graph (authoring_menu.cpp), given
-  /// where its nodes and badges are drawn.
-  void handle_graph_authoring(const std::vector<ImVec2>& nodes, const std::vector<ImVec2>& badges, float node_radius);
   /// What the view refers to, by name, so a structural edit (or its undo) keeps showing the
   /// same transition, state and part, or something valid (authoring.cpp).
   struct ViewNames {
@@ -289,34 +293,7 @@ class Studio {
   };
   ViewNames remember_view() const;
   void restore_view(const ViewNames& names);
-  /// The inspector's section for hints and automatic resolution (resolve_panel.cpp).
-  void draw_resolve_section();
-  /// The hint's arrows (at translation keys and handles) and arcs (about the pivot, for
-  /// rotation keys), for the viewport's draw list.
-  void add_hint_arrows(render::DrawList& list) const;
-  /// The hint's left/right arrows at the keys whose time it would move, on the timeline rows.
-  void draw_time_hints(ImDrawList* draw) const;
-  /// A hint is drawn only for the design version it was computed for (or slid to).
-  bool hint_is_current() const;
-  /// Takes the result of a finished automatic resolution (each frame).
-  void poll_auto_resolve();
-  /// Takes a hint computed in the background (each frame).
-  void poll_hint();
-  /// Shows a computed hint: the status line and the arrows.
-  void show_hint(HintView view);
   void handle_shortcuts();
-
-  // Viewport helpers.
-  void render_viewport_image(int width, int height);
-  void handle_viewport_mouse(const ImVec2& origin, int width, int height);
-  void draw_gizmo(ImDrawList* draw, const ImVec2& origin, int width, int height);
-  /// Whether a collision box of the selected part is shown at the current time (the gizmo
-  /// then fades, so it does not hide the box).
-  bool selected_part_collides_now() const;
-  /// The handle being dragged at its new place, over the picture (which shows the old one).
-  void draw_handle_drag(ImDrawList* draw, const ImVec2& origin, int width, int height) const;
-  view::Ray mouse_ray(const ImVec2& origin, int width, int height) const;
-  int pick_part(const view::Ray& ray) const;
 
   void reset_view_for_new_document();
   /// What "frame all" frames: the active transition's whole motion, else the active state.
@@ -324,34 +301,10 @@ class Studio {
   bool step_history(bool forward);
   void advance_playback(double seconds);
   void set_status(std::string message, bool error = false);
-  void draw_status_window();
 
   StudioOptions options_;
   std::unique_ptr<Document> document_;
   render::Renderer renderer_;
-  render::RenderTarget viewport_image_;
-  /// Everything the viewport picture depends on; an unchanged picture is not drawn again.
-  struct ViewportInputs {
-    const Document* document = nullptr;
-    std::uint64_t version = 0;
-    const collision::CollisionSnapshot* snapshot = nullptr;
-    int transition = -1, state = 0;
-    double time = 0;
-    int selected = -1, width = 0, height = 0;
-    std::array<double, 9> camera{};
-    std::array<double, 7> preview{};
-    bool ghosts = false;
-    int ghost_count = 0;
-    float ghost_spacing = 0;
-    bool intervals = false;
-    bool detailed = true;  ///< full meshes (false: the coarse ones drawn while things move)
-    std::array<std::int64_t, 2> hint{-1, 0};  ///< the hint's part and design version (arrows)
-    bool envelope = false;                     ///< the swept envelope is shown
-    std::uint64_t shaping = 0;                 ///< ShapingPanel::overlay_revision()
-    bool operator==(const ViewportInputs& other) const;
-  };
-  std::optional<ViewportInputs> last_viewport_inputs_;
-  bool viewport_pulsing_ = false;  ///< collision boxes on screen: redraw every frame
   view::Camera camera_;
   bool frame_pending_ = true;
   std::optional<CameraGlide> camera_glide_;  ///< a flight to a best view in progress
@@ -369,50 +322,18 @@ class Studio {
   int selected_part_ = -1;
   std::optional<KeyRef> selected_key_;
 
-  // Interactions in progress.
-  std::optional<GizmoDrag> gizmo_drag_;
-  std::optional<HandleDrag> handle_drag_;
-  std::optional<motion::Pose> drag_preview_;
-  std::optional<Gizmo> gizmo_;
-  std::optional<KeyRef> key_drag_;
-  double key_drag_time_ = 0;
-  bool viewport_dragging_ = false;
-  bool scrubbing_ = false;  ///< the time strip is being dragged
-
   std::optional<std::chrono::steady_clock::time_point> last_frame_;
   std::chrono::steady_clock::time_point now_{};
   double seconds_ = 0;
   Layout layout_;
   std::string status_;
   bool status_is_error_ = false;
-  bool status_window_open_ = false;  ///< the whole status text in a window
-  bool status_window_due_ = false;   ///< an error not yet shown: open the window if it is cut
   std::filesystem::path recovery_candidate_;
   std::string open_path_input_, save_path_input_;
   bool show_open_dialog_ = false, show_save_as_dialog_ = false, confirm_close_ = false;
-  /// The settings being edited in the Collisions > Settings window, while it is open.
-  std::optional<collision::DetectorOptions> settings_draft_;
-  /// Hints and automatic resolution (resolve_panel.cpp).
-  std::optional<HintView> hint_;
-  resolve::ShapeCache hint_shapes_;
-  std::vector<std::shared_ptr<const geometry::Mesh>> hint_shape_meshes_;  ///< what hint_shapes_ was built from
-  struct AutoResolveJob {
-    ~AutoResolveJob() { cancel = true; }  // before the future waits for the thread to end
-    int transition = -1;
-    std::uint64_t version = 0;  ///< of the design it resolves: a result for another is dropped
-    std::atomic<double> progress{0};
-    std::atomic<bool> cancel{false};
-    std::atomic<int> rounds{0};
-    std::atomic<double> energy{0};  ///< the last round's pair's energy after it (shown as it falls)
-    std::future<resolve::AutoResolveResult> result;
-  };
-  std::unique_ptr<AutoResolveJob> auto_resolve_;
-  bool auto_resolve_moves_states_ = false;  ///< the inspector's "states may move"
-  std::optional<AuthoringDialog> authoring_dialog_;  ///< authoring_menu.cpp: the open dialog
-  std::optional<int> graph_drag_from_;                 ///< a drag from this state's node
-  int graph_menu_state_ = -1, graph_menu_transition_ = -1;  ///< what the graph's right-click menu is for
-  std::unique_ptr<std::future<HintView>> hint_job_;  ///< a hint computed in the background
   bool quit_ = false;
+  struct Panels;
+  std::unique_ptr<Panels> panels_;
 };
 
 }  // namespace reconfig::studio
