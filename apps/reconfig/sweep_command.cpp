@@ -54,8 +54,8 @@ int find_transition(const scene::Reconfigurable& scene, const SweepOptions& opti
   return transition;
 }
 
-sweep::SweptVolumeRequest sweep_request(const SweepOptions& options) {
-  sweep::SweptVolumeRequest request;
+/// The sweep settings of the command line over `request` (the sweep's or a carve's defaults).
+sweep::SweptVolumeRequest sweep_request(const SweepOptions& options, sweep::SweptVolumeRequest request = {}) {
   request.grid_step = options.grid;
   request.offset = options.offset;
   return request;
@@ -189,7 +189,7 @@ int run_carve(const SweepOptions& options) {
   }
   request.t0 = options.t0;
   request.t1 = options.t1;
-  request.sweep = sweep_request(options);
+  request.sweep = sweep_request(options, sweep::carve_sweep_defaults());
   if (fs::path(options.output).extension() != ".json") throw InputError(options.output, "", "the output must be a .json scene");
   ProgressBar bar("carving", !options.json && stderr_is_terminal());
   const InterruptGuard interrupt;

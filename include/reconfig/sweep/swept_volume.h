@@ -20,7 +20,8 @@ struct SweptVolumeRequest {
   /// ε >= 0: the mesh bounds (at least) every point within ε of the swept volume.
   double offset = 0;
   /// No point of the part moves more than `time_fraction` · h between two time samples (δ).
-  double time_fraction = 0.25;
+  /// Carving uses a quarter (carve_part.h: `kCarveTimeFraction`) for a tighter cut.
+  double time_fraction = 0.5;
   /// Only the sweep inside this box (in the motion's target frame) is wanted, as when carving a
   /// part: the grid covers the box grown by ε + 3h, and the mesh closes a little outside it
   /// (the bound below then holds for the points of the box).
