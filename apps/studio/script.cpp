@@ -29,7 +29,7 @@ std::optional<double> script_number(const std::string& text) {
 ScriptError::ScriptError(const std::string& file, int line, const std::string& message)
     : std::runtime_error(fmt::format("{}:{}: {}", file, line, message)) {}
 
-void drag_through(HeadlessFrontend& frontend, const std::vector<ImVec2>& points, int button) {
+void drag_through(HeadlessFrontend& frontend, const std::vector<ImVec2>& points, int button, float wheel) {
   SimulatedInput& input = frontend.input();
   input.mouse = points.front();
   frontend.run_frame();  // hover first: ImGui sees the press where the mouse already is
@@ -37,6 +37,7 @@ void drag_through(HeadlessFrontend& frontend, const std::vector<ImVec2>& points,
   frontend.run_frame();
   for (std::size_t i = 1; i < points.size(); ++i) {
     input.mouse = points[i];
+    if (i == points.size() / 2) input.wheel = wheel;
     frontend.run_frame();
   }
   input.buttons[button] = false;

@@ -23,8 +23,9 @@ class ScriptError : public std::runtime_error {
 };
 
 /// Runs frames with the mouse at each point in turn, the button held from the first to the
-/// last (a press, a drag through the points, a release).
-void drag_through(HeadlessFrontend& frontend, const std::vector<ImVec2>& points, int button = 0);
+/// last (a press, a drag through the points, a release); `wheel` steps of the mouse wheel at
+/// the middle point.
+void drag_through(HeadlessFrontend& frontend, const std::vector<ImVec2>& points, int button = 0, float wheel = 0);
 
 /// The whole of `text` read as a finite number, or nothing (a script's numeric argument).
 std::optional<double> script_number(const std::string& text);

@@ -66,23 +66,6 @@ std::string set_view(Studio& studio, const std::vector<std::string>& args) {
   return "sculpt-view +x|-x|+y|-y|+z";
 }
 
-/// Drags with `button` through `points` (screen), `wheel` steps at the middle one.
-void drag(HeadlessFrontend& frontend, const std::vector<ImVec2>& points, int button, float wheel) {
-  SimulatedInput& input = frontend.input();
-  input.mouse = points.front();
-  frontend.run_frame();  // hover first: ImGui sees the press where the mouse already is
-  input.buttons[button] = true;
-  frontend.run_frame();
-  for (std::size_t i = 1; i < points.size(); ++i) {
-    input.mouse = points[i];
-    if (i == points.size() / 2) input.wheel = wheel;
-    frontend.run_frame();
-  }
-  input.buttons[button] = false;
-  frontend.run_frame();
-  frontend.run_frame();
-}
-
 std::vector<ImVec2> segment(ImVec2 a, ImVec2 b, int steps) {
   std::vector<ImVec2> points;
   for (int i = 0; i <= steps; ++i) {
@@ -108,7 +91,7 @@ std::string place(HeadlessFrontend& frontend, const std::vector<std::string>& ar
   const std::optional<ImVec2> to = frontend.studio().viewport_point(target);
   if (!problem.empty()) return problem;
   if (!to) return "that point is not in view";
-  drag(frontend, segment(*from, *to, 4), 1, 0);
+  drag_through(frontend, segment(*from, *to, 4), 1);
   return {};
 }
 
@@ -143,7 +126,7 @@ std::string stroke(HeadlessFrontend& frontend, const std::vector<std::string>& a
     points = segment(*from, *to, steps);
   }
   const std::uint64_t version = studio.document()->version();
-  drag(frontend, points, 0, wheel);
+  drag_through(frontend, points, 0, wheel);
   studio.sculpt().drag_mode = SculptPanel::DragMode::kMove;
   if (studio.document()->version() == version && studio.status().find("refused") == std::string::npos)
     return "the drag did not sculpt (not started on the part or the tool?): " + studio.status();
