@@ -17,6 +17,8 @@ std::optional<geometry::Mesh> swept_volumes(const scene::Reconfigurable& scene, 
   request.carvers = key.carvers;
   request.sweep.offset = key.offset;
   request.sweep.grid_step = key.grid;
+  request.t0 = key.from;
+  request.t1 = key.to;
   request.progress = std::move(progress);
   geometry::Mesh all;
   for (const sweep::SweptVolumeResult& sweep : sweep::carver_sweeps(scene, request)) {

@@ -25,6 +25,7 @@ class CarvePreview {
     int transition = -1, part = -1;
     std::vector<int> carvers;
     double offset = 0, grid = 0;
+    double from = 0, to = 1;  ///< the time range of the transition that carves
     bool operator==(const Key&) const = default;
   };
 

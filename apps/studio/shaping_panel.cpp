@@ -81,8 +81,14 @@ bool ShapingPanel::start_carve(Studio& studio, const CarveSettings& settings) {
     studio.set_status("carve: the offset and the grid step must be >= 0", true);
     return false;
   }
+  if (!(0 <= settings.from && settings.from < settings.to && settings.to <= 1)) {
+    studio.set_status(fmt::format("carve: the time range [{}, {}] is not within [0, 1]", settings.from, settings.to), true);
+    return false;
+  }
   request.sweep.offset = settings.offset;
   request.sweep.grid_step = settings.grid;
+  request.t0 = settings.from;
+  request.t1 = settings.to;
   auto job = std::make_unique<CarveJob>();
   job->part = scene->parts[request.part].name;
   job->version = document->version();
@@ -168,6 +174,9 @@ std::optional<CarvePreview::Key> ShapingPanel::preview_key(const Studio& studio)
     if (carver_checks_[p] && int(p) != key.part) key.carvers.push_back(int(p));
   key.offset = std::max(0.0, carve_draft_->offset);
   key.grid = std::max(0.0, carve_draft_->grid);
+  key.from = carve_draft_->from;
+  key.to = carve_draft_->to;
+  if (!(0 <= key.from && key.from < key.to && key.to <= 1)) return std::nullopt;
   return key;
 }
 
@@ -251,6 +260,54 @@ void ShapingPanel::draw_preview_status(const Studio& studio) {
   }
 }
 
+void ShapingPanel::draw_time_range(Studio& studio) {
+  const std::vector<collision::CollisionInterval> intervals = part_intervals(studio);
+  const auto& parts = studio.document()->scene().parts;
+  const auto label = [&](const collision::CollisionInterval& interval) {
+    std::vector<std::string> others;
+    for (const int p : interval.parts)
+      if (p != studio.selected_part() && p < int(parts.size())) others.push_back(parts[p].name);
+    return fmt::format("t {:.3f}-{:.3f} with {}", interval.t0, interval.t1, fmt::join(others, ", "));
+  };
+  const bool whole = carve_draft_->from == 0 && carve_draft_->to == 1;
+  const std::string shown = whole ? "the whole transition" : fmt::format("t {:.3f}-{:.3f}", carve_draft_->from, carve_draft_->to);
+  if (!ImGui::BeginCombo("over", shown.c_str())) return;
+  if (ImGui::Selectable("the whole transition", whole)) {
+    carve_draft_->from = 0;
+    carve_draft_->to = 1;
+  }
+  for (std::size_t i = 0; i < intervals.size(); ++i)
+    if (ImGui::Selectable(fmt::format("{}##range{}", label(intervals[i]), i).c_str())) choose_interval(studio, intervals[i]);
+  ImGui::EndCombo();
+}
+
+void ShapingPanel::choose_interval(Studio& studio, const collision::CollisionInterval& interval) {
+  if (!carve_draft_) return;
+  carve_draft_->from = interval.t0;
+  carve_draft_->to = interval.t1;
+  std::fill(carver_checks_.begin(), carver_checks_.end(), 0);
+  carve_draft_->carvers.clear();
+  const auto& parts = studio.document()->scene().parts;
+  for (const int p : interval.parts)
+    if (p != studio.selected_part() && p < int(carver_checks_.size())) {
+      carver_checks_[std::size_t(p)] = 1;
+      carve_draft_->carvers.push_back(parts[std::size_t(p)].name);
+    }
+}
+
+std::vector<collision::CollisionInterval> ShapingPanel::part_intervals(const Studio& studio) const {
+  std::vector<collision::CollisionInterval> intervals;
+  const auto snapshot = studio.collisions();
+  if (!snapshot) return intervals;
+  for (const auto& t : snapshot->transitions)
+    if (t.transition == studio.active_transition())
+      for (const auto& interval : t.intervals)
+        if (!interval.clearance && interval.t0 < interval.t1 &&
+            std::find(interval.parts.begin(), interval.parts.end(), studio.selected_part()) != interval.parts.end())
+          intervals.push_back(interval);
+  return intervals;
+}
+
 void ShapingPanel::draw(Studio& studio) {
   if (job_) {
     ImGui::SetNextWindowSize({360, 0}, ImGuiCond_Appearing);
@@ -270,8 +327,8 @@ void ShapingPanel::draw(Studio& studio) {
   bool open = true;
   ImGui::SetNextWindowSize({380, 0}, ImGuiCond_Appearing);
   if (ImGui::Begin("Carve", &open, ImGuiWindowFlags_NoCollapse)) {
-    ImGui::TextWrapped("Carve %s by the volume these parts sweep through it over the open transition:",
-                       parts[studio.selected_part()].name.c_str());
+    ImGui::TextWrapped("Carve %s by the volume these parts sweep through it:", parts[studio.selected_part()].name.c_str());
+    draw_time_range(studio);
     for (std::size_t p = 0; p < parts.size(); ++p) {
       if (int(p) == studio.selected_part()) continue;
       bool checked = carver_checks_[p];

@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "reconfig/collision/collision_interval.h"
 #include "reconfig/geometry/mesh.h"
 #include "reconfig/render/draw_list.h"
 #include "reconfig/scene/reconfigurable.h"
@@ -34,12 +35,15 @@ class ShapingPanel {
     std::vector<std::string> carvers;  ///< the parts whose sweeps are subtracted
     double offset = 0.005;             ///< ε, scene units
     double grid = 0;                   ///< grid step h; 0: 1/128 of the swept box
+    /// The part of the open transition whose motion carves: all of it, or a collision interval.
+    double from = 0, to = 1;
   };
 
-  /// Starts carving the selected part by `settings.carvers` over the open transition, in the
-  /// background; the result arrives (in `update`) as one undoable edit of the part's mesh.
+  /// Starts carving the selected part by `settings.carvers` over [from, to] of the open
+  /// transition, in the background; the result arrives (in `update`) as one undoable edit of
+  /// the part's mesh.
   /// @return false (the status line says why) with no part or transition, no or unknown
-  ///   carvers, the part among them, or a carve already running
+  ///   carvers, the part among them, a time range outside [0, 1], or a carve already running
   bool start_carve(Studio& studio, const CarveSettings& settings);
   /// Stops a running carve; nothing is changed.
   void cancel_carve(Studio& studio);
@@ -47,8 +51,14 @@ class ShapingPanel {
   /// The running carve's progress in [0, 1] (0 when none).
   double carve_progress() const { return job_ ? job_->progress.load() : 0.0; }
   /// Opens the Carve window for the selected part (the carvers preset to the parts it collides
-  /// with in the open transition).
+  /// with in the open transition, over all of it; its time range can be narrowed to one of the
+  /// part's collision intervals, whose other part then carves).
   void show_carve_window(Studio& studio);
+  /// The selected part's collision intervals in the open transition (the Carve window's time
+  /// ranges besides the whole transition).
+  std::vector<collision::CollisionInterval> part_intervals(const Studio& studio) const;
+  /// Narrows the open Carve window to `interval`: its time range, carved by its other parts.
+  void choose_interval(Studio& studio, const collision::CollisionInterval& interval);
   /// The Carve window's settings while it is open.
   const std::optional<CarveSettings>& carve_window() const { return carve_draft_; }
   /// Sets the open Carve window's carvers (checks), offset and grid, as if typed in.
@@ -75,6 +85,8 @@ class ShapingPanel {
   void draw(Studio& studio);
 
  private:
+  /// The Carve window's "over" choice: the whole transition or one of `part_intervals`.
+  void draw_time_range(Studio& studio);
   struct CarveJob {
     ~CarveJob() { cancel = true; }  // before the future waits for the thread to end
     std::string part;

@@ -30,11 +30,12 @@ bool parse_number(const std::string& text, double& value) {
   }
 }
 
-/// carve PART by B[,C…] [offset E] [grid H] [timeout S]
+/// carve PART by B[,C…] [offset E] [grid H] [from T0] [to T1] [timeout S]
 std::string carve(HeadlessFrontend& frontend, const std::vector<std::string>& args) {
   Studio& studio = frontend.studio();
   if (!studio.document()) return "no design is open";
-  if (args.size() < 3 || args[1] != "by") return "carve needs PART by B[,C…] [offset E] [grid H] [timeout S]";
+  if (args.size() < 3 || args[1] != "by")
+    return "carve needs PART by B[,C…] [offset E] [grid H] [from T0] [to T1] [timeout S]";
   const int part = studio.document()->scene().find_part(args[0]);
   if (part < 0) return fmt::format("no part \"{}\"", args[0]);
   ShapingPanel::CarveSettings settings;
@@ -46,8 +47,10 @@ std::string carve(HeadlessFrontend& frontend, const std::vector<std::string>& ar
       return fmt::format("after \"{}\": a number", args[i]);
     if (args[i] == "offset") settings.offset = value;
     else if (args[i] == "grid") settings.grid = value;
+    else if (args[i] == "from") settings.from = value;
+    else if (args[i] == "to") settings.to = value;
     else if (args[i] == "timeout") timeout = value;
-    else return fmt::format("unknown carve option \"{}\" (offset, grid, timeout)", args[i]);
+    else return fmt::format("unknown carve option \"{}\" (offset, grid, from, to, timeout)", args[i]);
   }
   studio.select_part(part);
   if (!studio.shaping().start_carve(studio, settings)) return studio.status();
@@ -64,11 +67,12 @@ std::string carve(HeadlessFrontend& frontend, const std::vector<std::string>& ar
   return "";
 }
 
-/// carve-window PART [by B[,C…]] [offset E] [grid H]: Collisions > Carve… on PART, then its settings.
+/// carve-window PART [interval K] [by B[,C…]] [offset E] [grid H] [from T0] [to T1]: Collisions >
+/// Carve… on PART, then its settings (`interval K`: over PART's K-th collision interval, 0 first).
 std::string carve_window(HeadlessFrontend& frontend, const std::vector<std::string>& args) {
   Studio& studio = frontend.studio();
   if (!studio.document()) return "no design is open";
-  if (args.empty()) return "carve-window needs PART [by B[,C…]] [offset E] [grid H]";
+  if (args.empty()) return "carve-window needs PART [interval K] [by B[,C…]] [offset E] [grid H] [from T0] [to T1]";
   const int part = studio.document()->scene().find_part(args[0]);
   if (part < 0) return fmt::format("no part \"{}\"", args[0]);
   studio.select_part(part);
@@ -80,9 +84,17 @@ std::string carve_window(HeadlessFrontend& frontend, const std::vector<std::stri
     double value = 0;
     if (args[i] == "by") settings.carvers = split_commas(args[i + 1]);
     else if (!parse_number(args[i + 1], value)) return fmt::format("after \"{}\": a number", args[i]);
-    else if (args[i] == "offset") settings.offset = value;
+    else if (args[i] == "interval") {
+      const auto intervals = studio.shaping().part_intervals(studio);
+      if (value < 0 || value >= double(intervals.size()) || value != std::floor(value))
+        return fmt::format("{} has {} collision intervals here: no interval {}", args[0], intervals.size(), args[i + 1]);
+      studio.shaping().choose_interval(studio, intervals[std::size_t(value)]);
+      settings = *studio.shaping().carve_window();
+    } else if (args[i] == "offset") settings.offset = value;
     else if (args[i] == "grid") settings.grid = value;
-    else return fmt::format("unknown carve-window option \"{}\" (by, offset, grid)", args[i]);
+    else if (args[i] == "from") settings.from = value;
+    else if (args[i] == "to") settings.to = value;
+    else return fmt::format("unknown carve-window option \"{}\" (interval, by, offset, grid, from, to)", args[i]);
   }
   if (!studio.shaping().set_carve_window(studio, settings)) return studio.status();
   frontend.run_frame();

@@ -18,7 +18,21 @@ namespace {
 
 using std::chrono::milliseconds;
 
-using StudioShaping = BenchTableUnfold;
+class StudioShaping : public BenchTableUnfold {
+ protected:
+  /// Carves the selected part by `settings` and waits: the time samples its sweeps took, from
+  /// the status line ("carved P: volume A -> B (N time samples)"); −1 when it did not carve.
+  int carve_and_count_time_samples(const ShapingPanel::CarveSettings& settings) {
+    if (!studio().shaping().start_carve(studio(), settings)) return -1;
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+    while (studio().shaping().carving() && std::chrono::steady_clock::now() < deadline) frontend_->run_frame();
+    frontend_->run_frame();
+    const std::string& status = studio().status();
+    const std::size_t open = status.rfind('(');
+    if (status.rfind("carved ", 0) != 0 || open == std::string::npos) return -1;
+    return std::stoi(status.substr(open + 1));
+  }
+};
 
 TEST_F(StudioShaping, CarvingTheBackrestByTheArmrestsFreesUnfoldAndUndoRestoresIt) {
   ASSERT_EQ(intervals_shown(), 2u);  // the backrest hits both armrests
@@ -35,6 +49,46 @@ TEST_F(StudioShaping, CarvingTheBackrestByTheArmrestsFreesUnfoldAndUndoRestoresI
   EXPECT_EQ(scene().parts[part("backrest")].mesh.V, before.V);
   ASSERT_TRUE(frontend_->run_until_collisions_current(milliseconds(60000)));
   EXPECT_EQ(intervals_shown(), 2u);
+}
+
+TEST_F(StudioShaping, CarvingOverOneIntervalFreesThatPairAndLeavesTheOther) {
+  studio().select_part(part("backrest"));
+  studio().shaping().show_carve_window(studio());
+  const std::vector<collision::CollisionInterval> intervals = studio().shaping().part_intervals(studio());
+  ASSERT_EQ(intervals.size(), 2u);  // the backrest hits both armrests
+  const collision::CollisionInterval chosen = intervals[0], other = intervals[1];
+  const int carver = chosen.parts[0] == part("backrest") ? chosen.parts[1] : chosen.parts[0];
+  studio().shaping().choose_interval(studio(), chosen);
+  const ShapingPanel::CarveSettings settings = *studio().shaping().carve_window();
+  EXPECT_EQ(settings.from, chosen.t0);
+  EXPECT_EQ(settings.to, chosen.t1);
+  EXPECT_EQ(settings.carvers, std::vector<std::string>{scene().parts[carver].name});
+  const int samples = carve_and_count_time_samples(settings);
+  ASSERT_TRUE(frontend_->run_until_collisions_current(milliseconds(60000)));
+  ASSERT_EQ(intervals_shown(), 1u);  // only the pair not carved still collides
+  const std::vector<collision::CollisionInterval> left = studio().shaping().part_intervals(studio());
+  ASSERT_EQ(left.size(), 1u);
+  EXPECT_EQ(left[0].parts, other.parts);
+  // The same carver over the whole transition sweeps more of its motion.
+  ASSERT_TRUE(studio().undo());
+  ShapingPanel::CarveSettings whole = settings;
+  whole.from = 0;
+  whole.to = 1;
+  EXPECT_LT(samples, carve_and_count_time_samples(whole));
+}
+
+TEST_F(StudioShaping, ATimeRangeOutsideTheTransitionIsRefused) {
+  studio().select_part(part("backrest"));
+  ShapingPanel::CarveSettings settings;
+  settings.carvers = {"armrest_left"};
+  settings.from = 0.6;
+  settings.to = 0.4;
+  EXPECT_FALSE(studio().shaping().start_carve(studio(), settings));
+  EXPECT_NE(studio().status().find("time range"), std::string::npos) << studio().status();
+  settings.from = 0;
+  settings.to = 1.5;
+  EXPECT_FALSE(studio().shaping().start_carve(studio(), settings));
+  EXPECT_THROW(run_script(*frontend_, "carve-window backrest interval 5\n", "bad.script"), ScriptError);
 }
 
 TEST_F(StudioShaping, ACancelledCarveChangesNothing) {
