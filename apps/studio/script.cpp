@@ -29,6 +29,15 @@ std::optional<double> script_number(const std::string& text) {
 ScriptError::ScriptError(const std::string& file, int line, const std::string& message)
     : std::runtime_error(fmt::format("{}:{}: {}", file, line, message)) {}
 
+std::vector<ImVec2> segment(ImVec2 a, ImVec2 b, int steps) {
+  std::vector<ImVec2> points;
+  for (int i = 0; i <= steps; ++i) {
+    const float f = static_cast<float>(i) / steps;
+    points.push_back({a.x + f * (b.x - a.x), a.y + f * (b.y - a.y)});
+  }
+  return points;
+}
+
 void drag_through(HeadlessFrontend& frontend, const std::vector<ImVec2>& points, int button, float wheel) {
   SimulatedInput& input = frontend.input();
   input.mouse = points.front();
@@ -46,15 +55,6 @@ void drag_through(HeadlessFrontend& frontend, const std::vector<ImVec2>& points,
 }
 
 namespace {
-
-std::vector<ImVec2> segment(ImVec2 a, ImVec2 b, int steps) {
-  std::vector<ImVec2> points;
-  for (int i = 0; i <= steps; ++i) {
-    const float f = static_cast<float>(i) / steps;
-    points.push_back({a.x + f * (b.x - a.x), a.y + f * (b.y - a.y)});
-  }
-  return points;
-}
 
 GizmoHandle parse_handle(const std::string& name) {
   static const std::pair<const char*, GizmoHandle> kHandles[] = {

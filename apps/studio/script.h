@@ -22,6 +22,9 @@ class ScriptError : public std::runtime_error {
   ScriptError(const std::string& file, int line, const std::string& message);
 };
 
+/// `steps` + 1 evenly spaced points from a to b, both included (a drag's path).
+std::vector<ImVec2> segment(ImVec2 a, ImVec2 b, int steps);
+
 /// Runs frames with the mouse at each point in turn, the button held from the first to the
 /// last (a press, a drag through the points, a release); `wheel` steps of the mouse wheel at
 /// the middle point.

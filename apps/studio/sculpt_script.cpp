@@ -66,15 +66,6 @@ std::string set_view(Studio& studio, const std::vector<std::string>& args) {
   return "sculpt-view +x|-x|+y|-y|+z";
 }
 
-std::vector<ImVec2> segment(ImVec2 a, ImVec2 b, int steps) {
-  std::vector<ImVec2> points;
-  for (int i = 0; i <= steps; ++i) {
-    const float f = static_cast<float>(i) / steps;
-    points.push_back({a.x + f * (b.x - a.x), a.y + f * (b.y - a.y)});
-  }
-  return points;
-}
-
 /// The tool's center on screen, or a message.
 std::optional<ImVec2> tool_on_screen(Studio& studio, std::string& problem) {
   if (!studio.sculpt().mode()) problem = "sculpt mode is off (sculpt-mode on)";
