@@ -8,6 +8,21 @@
 #include "reconfig/collision/consolidate.h"
 
 namespace reconfig::collision {
+namespace {
+
+/// A picture of `scene` at `version` before any detection: each transition named, nothing found.
+std::shared_ptr<const CollisionSnapshot> undetected(const scene::Reconfigurable& scene, std::uint64_t version) {
+  auto snapshot = std::make_shared<CollisionSnapshot>();
+  snapshot->version = version;
+  snapshot->transitions.resize(scene.transitions.size());
+  for (std::size_t t = 0; t < scene.transitions.size(); ++t) {
+    snapshot->transitions[t].transition = static_cast<int>(t);
+    snapshot->transitions[t].name = scene.transitions[t].name;
+  }
+  return snapshot;
+}
+
+}  // namespace
 
 CollisionService::CollisionService(CollisionServiceOptions options)
     : options_(options), snapshot_(std::make_shared<CollisionSnapshot>()) {
@@ -32,9 +47,13 @@ CollisionService::~CollisionService() {
 std::uint64_t CollisionService::submit(std::shared_ptr<const scene::Reconfigurable> scene,
                                        const scene::DirtySet& dirty) {
   std::lock_guard lock(mutex_);
+  ++submitted_;
+  if (dirty.structure_changed) {  // the old picture's indices mean other parts now
+    renumbered_ = submitted_;
+    snapshot_ = undetected(*scene, submitted_);
+  }
   pending_scene_ = std::move(scene);
   pending_dirty_.merge(dirty);
-  ++submitted_;
   changed_.notify_all();
   return submitted_;
 }
@@ -52,6 +71,7 @@ bool CollisionService::wait_until_complete(std::chrono::milliseconds timeout) co
 void CollisionService::publish(std::shared_ptr<const CollisionSnapshot> next) {
   {
     std::lock_guard lock(mutex_);
+    if (next->version < renumbered_) return;  // a round on the old numbering
     snapshot_ = std::move(next);
   }
   changed_.notify_all();

@@ -2,10 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <thread>
 
 #include "reconfig/collision/consolidate.h"
 #include "reconfig/scene/edits.h"
+#include "reconfig/scene/part_edits.h"
 #include "reconfig/scene/history.h"
 #include "reconfig/scene/scene_file.h"
 #include "reconfig/scene/transition_edits.h"
@@ -82,6 +84,38 @@ TEST(CollisionService, AnAppendedTransitionIsDetectedAlone) {
   ASSERT_TRUE(service.wait_until_complete(60s));
   ASSERT_EQ(service.snapshot()->transitions.size(), 2u);
   EXPECT_EQ(service.snapshot()->transitions[0].intervals.size(), 2u);
+}
+
+// Deleting a part renumbers those after it: from the submission on, no published picture names
+// a part by its old index (the UI looks parts up by index).
+TEST(CollisionService, NoPictureAfterARenumberingUsesTheOldIndices) {
+  CollisionService service;
+  auto scene = std::make_shared<scene::Reconfigurable>(bench_table());
+  service.submit(scene, everything());
+  ASSERT_TRUE(service.wait_until_complete(60s));
+  const int last = scene->find_part("armrest_right");
+  ASSERT_EQ(last, static_cast<int>(scene->parts.size()) - 1);
+  bool names_last = false;  // the picture before names the last part: the index at stake
+  for (const CollisionInterval& interval : service.snapshot()->transitions[0].intervals)
+    names_last = names_last || std::count(interval.parts.begin(), interval.parts.end(), last) > 0;
+  ASSERT_TRUE(names_last);
+  auto next = std::make_shared<scene::Reconfigurable>(*scene);
+  scene::History history;
+  const scene::DirtySet dirty = history.execute(*next, scene::delete_part("armrest_left"));
+  ASSERT_TRUE(dirty.structure_changed);
+  service.submit(next, dirty);
+  for (int polls = 0; polls < 20000; ++polls) {
+    const auto snapshot = service.snapshot();
+    for (const TransitionSnapshot& transition : snapshot->transitions)
+      for (const CollisionInterval& interval : transition.intervals)
+        for (int part : interval.parts) ASSERT_LT(part, static_cast<int>(next->parts.size())) << "poll " << polls;
+    if (snapshot->complete) break;
+    std::this_thread::sleep_for(50us);
+  }
+  ASSERT_TRUE(service.wait_until_complete(60s));
+  ASSERT_EQ(service.snapshot()->transitions[0].intervals.size(), 1u);  // backrest × armrest_right
+  EXPECT_EQ(service.snapshot()->transitions[0].intervals[0].parts,
+            (std::vector<int>{next->find_part("backrest"), next->find_part("armrest_right")}));
 }
 
 TEST(CollisionService, EveryPublishedEntryNamesItsTransition) {

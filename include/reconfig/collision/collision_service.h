@@ -61,7 +61,10 @@ class CollisionService {
 
   /// Hands over a new version of the design and what changed since the previously submitted
   /// one (an empty set with `structure_changed` for the first). Returns at once; work on an
-  /// older version is cancelled at its next check and the dirty sets are merged.
+  /// older version is cancelled at its next check and the dirty sets are merged. A change of
+  /// structure (parts or transitions renumbered) replaces the picture at once by an empty one
+  /// for this version, and pictures of older versions are no longer published: no picture
+  /// names a part or transition by an index of another numbering.
   /// @return the version number of this submission (1, 2, …)
   std::uint64_t submit(std::shared_ptr<const scene::Reconfigurable> scene, const scene::DirtySet& dirty);
 
@@ -82,6 +85,7 @@ class CollisionService {
   std::shared_ptr<const scene::Reconfigurable> pending_scene_;
   scene::DirtySet pending_dirty_;
   std::uint64_t submitted_ = 0;
+  std::uint64_t renumbered_ = 0;  ///< the latest submission whose structure changed
   bool stopping_ = false;
   std::shared_ptr<const CollisionSnapshot> snapshot_;
   std::thread worker_;
