@@ -14,11 +14,16 @@
 
 namespace reconfig::studio {
 
-static_assert(keys::kSpace == GLFW_KEY_SPACE && keys::kI == GLFW_KEY_I && keys::kZ == GLFW_KEY_Z &&
-              keys::kDelete == GLFW_KEY_DELETE && keys::kLeft == GLFW_KEY_LEFT && keys::kRight == GLFW_KEY_RIGHT &&
-              keys::kEscape == GLFW_KEY_ESCAPE && keys::kEnd == GLFW_KEY_END && keys::kS == GLFW_KEY_S &&
-                  keys::kO == GLFW_KEY_O,
-              "keys.h must use GLFW's key codes");
+static_assert(keys::kSpace == GLFW_KEY_SPACE && keys::kA == GLFW_KEY_A && keys::kF == GLFW_KEY_F &&
+                  keys::kG == GLFW_KEY_G && keys::kH == GLFW_KEY_H && keys::kI == GLFW_KEY_I &&
+                  keys::kK == GLFW_KEY_K && keys::kO == GLFW_KEY_O && keys::kP == GLFW_KEY_P &&
+                  keys::kS == GLFW_KEY_S && keys::kV == GLFW_KEY_V && keys::kZ == GLFW_KEY_Z &&
+                  keys::kEscape == GLFW_KEY_ESCAPE && keys::kEnter == GLFW_KEY_ENTER && keys::kTab == GLFW_KEY_TAB &&
+                  keys::kBackspace == GLFW_KEY_BACKSPACE && keys::kInsert == GLFW_KEY_INSERT &&
+                  keys::kDelete == GLFW_KEY_DELETE && keys::kRight == GLFW_KEY_RIGHT && keys::kLeft == GLFW_KEY_LEFT &&
+                  keys::kDown == GLFW_KEY_DOWN && keys::kUp == GLFW_KEY_UP && keys::kPageUp == GLFW_KEY_PAGE_UP &&
+                  keys::kPageDown == GLFW_KEY_PAGE_DOWN && keys::kHome == GLFW_KEY_HOME && keys::kEnd == GLFW_KEY_END,
+              "keys.h must use GLFW's key codes (every key it names)");
 
 namespace {
 

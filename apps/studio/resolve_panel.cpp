@@ -39,22 +39,6 @@ double slide_reach(const resolve::Hint& hint, const geometry::Mesh& mesh) {
   return 0.5 * geometry::bounding_box(mesh.V).diagonal().norm();
 }
 
-/// Whether two tracks have the same keyframes (a screw track never counts as unchanged).
-bool same_keys(const scene::Track& a, const scene::Track& b) {
-  const auto* x = std::get_if<scene::KeyframedTrack>(&a);
-  const auto* y = std::get_if<scene::KeyframedTrack>(&b);
-  if (!x || !y) return false;
-  const auto same_translation = [](const motion::TranslationKey& p, const motion::TranslationKey& q) {
-    return p.time == q.time && p.point == q.point && p.in == q.in && p.out == q.out;
-  };
-  const auto same_rotation = [](const motion::RotationKey& p, const motion::RotationKey& q) {
-    return p.time == q.time && p.rotation.coeffs() == q.rotation.coeffs();
-  };
-  return std::equal(x->translation.begin(), x->translation.end(), y->translation.begin(), y->translation.end(),
-                    same_translation) &&
-         std::equal(x->rotation.begin(), x->rotation.end(), y->rotation.begin(), y->rotation.end(), same_rotation);
-}
-
 /// The edits that turn `now` into `resolved` (automatic resolution of `transition`): the parts
 /// moved in a state (every transition through it follows), then the transition's changed
 /// tracks.
@@ -64,14 +48,14 @@ std::vector<std::unique_ptr<scene::Command>> resolution_edits(const scene::Recon
   for (std::size_t s = 0; s < resolved.states.size(); ++s)
     for (const scene::Part& part : resolved.parts) {
       const motion::Pose was = now.states[s].pose_of(part.name), pose = resolved.states[s].pose_of(part.name);
-      if (was.translation != pose.translation || was.rotation.coeffs() != pose.rotation.coeffs())
+      if (was != pose)
         steps.push_back(scene::set_state_pose(resolved.states[s].name, part.name, pose));
     }
   std::map<std::string, scene::Track> tracks;
   const auto& before = now.transitions[transition].tracks;
   for (const auto& [part, track] : resolved.transitions[transition].tracks) {
     const auto it = before.find(part);
-    if (it == before.end() || !same_keys(track, it->second)) tracks[part] = track;
+    if (it == before.end() || track != it->second) tracks[part] = track;
   }
   const std::string& name = resolved.transitions[transition].name;
   if (!tracks.empty()) steps.push_back(scene::set_transition_tracks(name, std::move(tracks), "resolve " + name));

@@ -52,7 +52,7 @@ std::map<std::string, std::vector<std::string>> moved_states(const scene::Reconf
   for (std::size_t s = 0; s < after.states.size(); ++s)
     for (const scene::Part& part : after.parts) {
       const motion::Pose a = before.states[s].pose_of(part.name), b = after.states[s].pose_of(part.name);
-      if (a.translation != b.translation || a.rotation.coeffs() != b.rotation.coeffs())
+      if (a != b)
         moved[after.states[s].name].push_back(fmt::format("{} in {}", part.name, after.states[s].name));
     }
   return moved;

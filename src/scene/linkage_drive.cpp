@@ -30,17 +30,6 @@ std::string full_quaternion(const Eigen::Quaterniond& q) {
   return fmt::format("[{}, {}, {}, {}]", q.w(), q.x(), q.y(), q.z());
 }
 
-bool same_keys(const ScrewPosesTrack& a, const ScrewPosesTrack& b) {
-  if (a.poses.size() != b.poses.size()) return false;
-  for (std::size_t k = 0; k < a.poses.size(); ++k) {
-    const motion::ScrewKey &p = a.poses[k], &q = b.poses[k];
-    if (p.time != q.time || p.pose.translation != q.pose.translation ||
-        p.pose.rotation.coeffs() != q.pose.rotation.coeffs())
-      return false;
-  }
-  return true;
-}
-
 /// Everything needed to evaluate a drive: the kinematics, the placement, the attached bodies.
 struct PreparedDrive {
   std::unique_ptr<linkage::SymbolicKinematics> kinematics;
@@ -135,7 +124,7 @@ void compile_linkage_drive(Reconfigurable& scene, int index, DriveStatePoses sta
     if (track == transition.tracks.end()) continue;
     const auto compiled = drive.compiled.find(a.part);
     const auto* screw = std::get_if<ScrewPosesTrack>(&track->second);
-    if (compiled == drive.compiled.end() || !screw || !same_keys(*screw, compiled->second))
+    if (compiled == drive.compiled.end() || !screw || *screw != compiled->second)
       fail(fmt::format("{}.tracks.{}", path, a.part),
            fmt::format("part \"{}\" is driven by the linkage of this transition: remove its track", a.part));
   }
@@ -190,7 +179,7 @@ void compile_linkage_drive(Reconfigurable& scene, int index, DriveStatePoses sta
     if (drive.drives(part)) continue;
     const auto it = transition.tracks.find(part);
     if (it != transition.tracks.end())
-      if (const auto* screw = std::get_if<ScrewPosesTrack>(&it->second); screw && same_keys(*screw, track))
+      if (const auto* screw = std::get_if<ScrewPosesTrack>(&it->second); screw && *screw == track)
         transition.tracks.erase(it);
   }
   drive.compiled.clear();
@@ -240,7 +229,7 @@ std::string edited_driven_part(const Transition& transition) {
     const auto compiled = transition.linkage->compiled.find(a.part);
     if (track == transition.tracks.end() || compiled == transition.linkage->compiled.end()) return a.part;
     const auto* screw = std::get_if<ScrewPosesTrack>(&track->second);
-    if (!screw || !same_keys(*screw, compiled->second)) return a.part;
+    if (!screw || *screw != compiled->second) return a.part;
   }
   return "";
 }

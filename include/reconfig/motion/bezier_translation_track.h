@@ -19,6 +19,8 @@ struct TranslationKey {
   Eigen::Vector3d point = Eigen::Vector3d::Zero();  ///< t_j
   Eigen::Vector3d in = Eigen::Vector3d::Zero();     ///< u_j, handle before the key
   Eigen::Vector3d out = Eigen::Vector3d::Zero();    ///< w_j, handle after the key
+
+  bool operator==(const TranslationKey&) const = default;  ///< the same numbers, bit for bit
 };
 
 /// The translation x(t) of a part: between keys j and j+1, with f = (t − s_j)/(s_{j+1} − s_j),

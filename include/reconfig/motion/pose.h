@@ -21,6 +21,12 @@ struct Pose {
 
   /// The pose, about `center`, that places points as the rigid map `M` does.
   static Pose from_isometry(const Eigen::Isometry3d& M, const Eigen::Vector3d& center);
+
+  /// The same numbers, bit for bit: the quaternions' coefficients as stored, so q and −q
+  /// (the same rotation) differ. For "did an edit change this?", not for geometry.
+  bool operator==(const Pose& other) const {
+    return rotation.coeffs() == other.rotation.coeffs() && translation == other.translation;
+  }
 };
 
 }  // namespace reconfig::motion

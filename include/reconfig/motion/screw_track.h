@@ -17,6 +17,8 @@ namespace reconfig::motion {
 struct ScrewKey {
   double time = 0.0;
   Pose pose;
+
+  bool operator==(const ScrewKey&) const = default;  ///< the same numbers, bit for bit
 };
 
 /// The motion of a part through key poses, consecutive poses joined by `ScrewMotion`s.

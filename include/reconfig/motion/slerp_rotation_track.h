@@ -16,6 +16,11 @@ namespace reconfig::motion {
 struct RotationKey {
   double time = 0.0;                                                 ///< σ_j
   Eigen::Quaterniond rotation = Eigen::Quaterniond::Identity();  ///< θ_j
+
+  /// The same numbers, bit for bit (q and −q differ).
+  bool operator==(const RotationKey& other) const {
+    return time == other.time && rotation.coeffs() == other.rotation.coeffs();
+  }
 };
 
 /// The rotation θ(t): between keys j and j+1, with g = (t − σ_j)/(σ_{j+1} − σ_j),

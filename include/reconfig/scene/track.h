@@ -19,11 +19,15 @@ namespace reconfig::scene {
 struct KeyframedTrack {
   std::vector<motion::TranslationKey> translation;
   std::vector<motion::RotationKey> rotation;
+
+  bool operator==(const KeyframedTrack&) const = default;  ///< the same keys, bit for bit
 };
 
 /// Piecewise screw motion through key poses (Rossignac & Kim).
 struct ScrewPosesTrack {
   std::vector<motion::ScrewKey> poses;
+
+  bool operator==(const ScrewPosesTrack&) const = default;  ///< the same keys, bit for bit
 };
 
 using Track = std::variant<KeyframedTrack, ScrewPosesTrack>;
