@@ -167,10 +167,11 @@ TEST_F(StudioSculptMode, KTogglesTheModeAndTheWheelScalesTheTool) {
 
 /// `mesh` after the library's rotation stroke of `tool` by `degrees` about `axis` through its
 /// center, applied directly (the closed form of Sweepers §4.3).
-geometry::Mesh rotated_directly(geometry::Mesh mesh, const sculpt::Tool& tool, const Eigen::Vector3d& axis, double degrees) {
+geometry::Mesh rotated_directly(geometry::Mesh mesh, const sculpt::Tool& tool, const Eigen::Vector3d& axis, double degrees,
+                                const sculpt::StrokeOptions& options = {}) {
   Eigen::MatrixX3d no_normals(0, 3);
   const sculpt::StrokeResult result = sculpt::sculpt_mesh(
-      {{tool, sculpt::ToolMotion::rotation(axis, degrees * M_PI / 180, tool.pose().translation)}}, {}, mesh, no_normals);
+      {{tool, sculpt::ToolMotion::rotation(axis, degrees * M_PI / 180, tool.pose().translation)}}, options, mesh, no_normals);
   EXPECT_TRUE(result.applied) << result.refusal;
   return mesh;
 }
@@ -226,6 +227,41 @@ TEST_F(StudioSculptMode, ARingDragTurnsTheToolAndThePartAboutTheRingsAxis) {
   const AxisAngle back = axis_angle_of(studio().sculpt().settings().rotation);
   EXPECT_NEAR(back.degrees, 15, 0.1);
   EXPECT_LT((back.axis + Eigen::Vector3d::UnitX()).norm(), 1e-6);
+  ASSERT_TRUE(studio().undo());
+  // With the mirror plane y = 0 the front end turns the other way, as the library's mirrored
+  // stroke does.
+  studio().sculpt().settings().rotation = Eigen::Quaterniond::Identity();
+  studio().sculpt().settings().mirror = 1;
+  run_script(*frontend_, "sculpt-ring x 20\n", "mirrored");
+  const AxisAngle mirrored = axis_angle_of(studio().sculpt().settings().rotation);
+  sculpt::StrokeOptions mirror;
+  mirror.mirror.axis = 1;
+  const geometry::Mesh both = rotated_directly(before, tool, Eigen::Vector3d::UnitX(), mirrored.degrees, mirror);
+  EXPECT_LT((mesh_of("armrest_left").V - both.V).cwiseAbs().maxCoeff(), 1e-9);
+  const Eigen::MatrixX3d& V = mesh_of("armrest_left").V;
+  for (int v = 0; v < before.vertex_count(); ++v) {
+    EXPECT_GT((V.row(v) - before.V.row(v)).norm(), 0.005) << v;  // both ends turned
+    const Eigen::RowVector3d image = V.row(v).cwiseProduct(Eigen::RowVector3d(1, -1, 1));
+    EXPECT_LT((V.rowwise() - image).rowwise().norm().minCoeff(), 1e-9) << v;  // symmetric about y = 0
+  }
+}
+
+TEST_F(StudioSculptMode, ARefusedTurnStopsTheStrokeAtItsLastGoodState) {
+  // Turning the armrest's rear end round past half a turn would twist its long faces through
+  // each other: a move is refused, and the stroke keeps the turn it had.
+  look_from_the_side();
+  studio().select_part(part("armrest_left"));
+  run_script(*frontend_, "sculpt-mode on\nsculpt-tool box 0.2 0.2 0.2 0.08\nsculpt-center 0 -0.25 0\n", "sculpt mode");
+  const geometry::Mesh before = mesh_of("armrest_left");
+  run_script(*frontend_, "sculpt-ring x 270 steps 12\n", "too far");
+  EXPECT_NE(studio().status().find("refused"), std::string::npos) << studio().status();
+  EXPECT_NE(mesh_of("armrest_left").V, before.V);
+  const AxisAngle kept = axis_angle_of(studio().sculpt().settings().rotation);
+  EXPECT_GT(kept.degrees, 10);
+  EXPECT_LT(kept.degrees, 180);
+  EXPECT_TRUE(geometry::find_self_intersections(mesh_of("armrest_left"), 1).pairs.empty());
+  ASSERT_TRUE(studio().undo());  // the stroke is one edit
+  EXPECT_EQ(mesh_of("armrest_left").V, before.V);
 }
 
 TEST_F(StudioSculptMode, TheToolsRotationTurnsABoxToolAndItsRings) {
