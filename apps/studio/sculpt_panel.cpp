@@ -161,7 +161,8 @@ std::optional<ToolRings> SculptPanel::rings(const Studio& studio) const {
   if (!mode_ || !studio.document() || studio.selected_part() < 0) return std::nullopt;
   std::string problem;
   Eigen::Vector3d origin = stroke_ ? stroke_->tool_origin : Eigen::Vector3d::Zero();
-  const std::optional<sculpt::Tool> tool = stroke_ ? std::optional(stroke_->tool) : make_tool(studio, nullptr, &origin, problem);
+  const std::optional<sculpt::Tool> tool =
+      stroke_ ? std::optional(stroke_->tool) : make_tool(studio, nullptr, &origin, problem);
   const std::optional<Eigen::Isometry3d> to_world = stroke_ ? std::optional(stroke_->to_world) : part_to_world(studio);
   if (!tool || !to_world) return std::nullopt;
   // How far the tool reaches from its center: half its box's diagonal, the coating left out.
@@ -343,7 +344,8 @@ bool SculptPanel::turn_tool(Studio& studio) {
   const double turn = at ? swept_turn({at->x, at->y}, s.last_mouse, mouse, *s.turn_axis, s.plane_normal) : 0;
   s.last_mouse = mouse;
   if (turn == 0) return false;
-  return move_tool(studio, sculpt::ToolMotion::rotation(s.to_world.linear().transpose() * *s.turn_axis, turn, center_rest));
+  const Eigen::Vector3d axis_rest = s.to_world.linear().transpose() * *s.turn_axis;
+  return move_tool(studio, sculpt::ToolMotion::rotation(axis_rest, turn, center_rest));
 }
 
 void SculptPanel::show_live(Studio& studio) {
@@ -390,7 +392,8 @@ bool SculptPanel::handle_mouse(Studio& studio, const view::Ray& ray, bool hovere
     place_tool(studio, ray);
     return true;
   }
-  return ImGui::IsMouseClicked(ImGuiMouseButton_Left) && start_stroke(studio, ray, ring_at(studio, ImGui::GetIO().MousePos));
+  return ImGui::IsMouseClicked(ImGuiMouseButton_Left) &&
+         start_stroke(studio, ray, ring_at(studio, ImGui::GetIO().MousePos));
 }
 
 // ---- the inspector's section ---------------------------------------------------------------

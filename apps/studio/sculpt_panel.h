@@ -9,8 +9,8 @@
 /// ring's axis, the mouse wheel scales it while the button is held. Each stroke (press to
 /// release) is one undoable edit of the part's mesh, replaced frame by frame while the
 /// collision service re-detects the part's transitions; a refused sub-step stops the stroke
-/// at its last good state. The next stroke starts with the tool where, as big and as turned
-/// as the last one left it. Its own state, drawn by `draw` (like pip_panel.h).
+/// at its last good state. The next stroke starts with the tool where the last one left it,
+/// as big and as turned. Its own state, drawn by `draw` (like pip_panel.h).
 
 #include <imgui.h>
 

@@ -56,8 +56,9 @@ std::string set_center(Studio& studio, const std::vector<std::string>& args) {
 /// sculpt-rotation AX AY AZ DEGREES: the tool's rotation (the inspector's tool axis and degrees).
 std::string set_rotation(Studio& studio, const std::vector<std::string>& args) {
   std::string problem;
-  const AxisAngle rotation{{number(args, 0, "axis x", problem), number(args, 1, "axis y", problem), number(args, 2, "axis z", problem)},
-                           number(args, 3, "degrees", problem)};
+  const Eigen::Vector3d axis(number(args, 0, "axis x", problem), number(args, 1, "axis y", problem),
+                             number(args, 2, "axis z", problem));
+  const AxisAngle rotation{axis, number(args, 3, "degrees", problem)};
   const std::optional<Eigen::Quaterniond> q = problem.empty() ? rotation_of(rotation) : std::nullopt;
   if (!q) return problem.empty() ? "the rotation axis must not be zero" : problem;
   studio.sculpt().settings().rotation = *q;
@@ -114,7 +115,8 @@ std::optional<ImVec2> ring_press(Studio& studio, int axis, const ImVec2& at) {
   const std::optional<ToolRings> rings = studio.sculpt().rings(studio);
   const Layout& layout = studio.layout();
   const auto in_view = [&](const ImVec2& p) {
-    return p.x > layout.viewport_min.x && p.x < layout.viewport_max.x && p.y > layout.viewport_min.y && p.y < layout.viewport_max.y;
+    return p.x > layout.viewport_min.x && p.x < layout.viewport_max.x && p.y > layout.viewport_min.y &&
+           p.y < layout.viewport_max.y;
   };
   std::optional<ImVec2> best;
   float farthest = 0;
@@ -137,7 +139,8 @@ std::vector<ImVec2> sweep_path(const ImVec2& at, const ImVec2& from, double swee
   std::vector<ImVec2> points{from};
   for (int i = 1; i <= steps; ++i) {
     const double angle = start + sweep * i / steps;
-    points.push_back(whole_pixel({at.x + static_cast<float>(radius * std::cos(angle)), at.y + static_cast<float>(radius * std::sin(angle))}));
+    points.push_back(whole_pixel(
+        {at.x + static_cast<float>(radius * std::cos(angle)), at.y + static_cast<float>(radius * std::sin(angle))}));
   }
   const ImVec2 end = points.back();
   for (int dx = -2; dx <= 2; ++dx)
@@ -164,7 +167,8 @@ std::string ring_drag(HeadlessFrontend& frontend, const std::vector<std::string>
   const std::optional<ImVec2> from = ring_press(studio, axis, *at);
   if (!from) return fmt::format("the tool's {} ring is seen edge-on or not in view", args[0]);
   // swept_turn's sign, undone: a positive screen sweep turns about an axis pointing away.
-  const double sweep = studio.sculpt().rings(studio)->axes.col(axis).dot(studio.camera().forward()) >= 0 ? radians : -radians;
+  const bool away = studio.sculpt().rings(studio)->axes.col(axis).dot(studio.camera().forward()) >= 0;
+  const double sweep = away ? radians : -radians;
   const std::vector<ImVec2> points = sweep_path(*at, *from, sweep, steps);
   const std::uint64_t version = studio.document()->version();
   drag_through(frontend, points, 0);

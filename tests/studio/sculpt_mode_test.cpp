@@ -167,11 +167,11 @@ TEST_F(StudioSculptMode, KTogglesTheModeAndTheWheelScalesTheTool) {
 
 /// `mesh` after the library's rotation stroke of `tool` by `degrees` about `axis` through its
 /// center, applied directly (the closed form of Sweepers §4.3).
-geometry::Mesh rotated_directly(geometry::Mesh mesh, const sculpt::Tool& tool, const Eigen::Vector3d& axis, double degrees,
-                                const sculpt::StrokeOptions& options = {}) {
+geometry::Mesh rotated_directly(geometry::Mesh mesh, const sculpt::Tool& tool, const Eigen::Vector3d& axis,
+                                double degrees, const sculpt::StrokeOptions& options = {}) {
   Eigen::MatrixX3d no_normals(0, 3);
-  const sculpt::StrokeResult result = sculpt::sculpt_mesh(
-      {{tool, sculpt::ToolMotion::rotation(axis, degrees * M_PI / 180, tool.pose().translation)}}, options, mesh, no_normals);
+  const sculpt::ToolMotion turn = sculpt::ToolMotion::rotation(axis, degrees * M_PI / 180, tool.pose().translation);
+  const sculpt::StrokeResult result = sculpt::sculpt_mesh({{tool, turn}}, options, mesh, no_normals);
   EXPECT_TRUE(result.applied) << result.refusal;
   return mesh;
 }

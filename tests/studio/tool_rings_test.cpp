@@ -48,7 +48,8 @@ TEST(ToolRings, ARingFacingTheViewerSweepsTheAngleTurned) {
     axes.col(2) = towards * camera.forward();
     axes.col(0) = axes.col(2).unitOrthogonal();
     axes.col(1) = axes.col(2).cross(axes.col(0));
-    const ToolRings rings = ToolRings::around(camera, kHeight, camera.target + Eigen::Vector3d(u(random), u(random), u(random)), axes, 0);
+    const Eigen::Vector3d center = camera.target + Eigen::Vector3d(u(random), u(random), u(random));
+    const ToolRings rings = ToolRings::around(camera, kHeight, center, axes, 0);
     const double a = angle(random), b = angle(random);
     const double turn = swept_turn(pixel(camera, rings.center), pixel(camera, on_ring(rings, 2, a)),
                                    pixel(camera, on_ring(rings, 2, b)), axes.col(2), camera.forward());
@@ -67,9 +68,9 @@ TEST(ToolRings, ATurnRoundAnySlantedRingSweepsOneTurnTheRightWay) {
       if (std::abs(rings.axes.col(axis).dot(camera.forward())) < 0.05) continue;  // seen edge-on
       double total = 0;
       for (int step = 0; step < 90; ++step) {
-        const double turn = swept_turn(pixel(camera, rings.center), pixel(camera, on_ring(rings, axis, step * 2 * M_PI / 90)),
-                                       pixel(camera, on_ring(rings, axis, (step + 1) * 2 * M_PI / 90)),
-                                       rings.axes.col(axis), camera.forward());
+        const Eigen::Vector2d from = pixel(camera, on_ring(rings, axis, step * 2 * M_PI / 90)),
+                              to = pixel(camera, on_ring(rings, axis, (step + 1) * 2 * M_PI / 90));
+        const double turn = swept_turn(pixel(camera, rings.center), from, to, rings.axes.col(axis), camera.forward());
         EXPECT_GT(turn, 0) << "trial " << trial << " axis " << axis << " step " << step;
         total += turn;
       }
