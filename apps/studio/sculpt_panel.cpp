@@ -12,6 +12,7 @@
 #include "reconfig/geometry/primitives.h"
 #include "reconfig/scene/edits.h"
 #include "reconfig/sculpt/sculpt_stroke.h"
+#include "axis_angle.h"
 #include "studio.h"
 
 namespace reconfig::studio {
@@ -35,6 +36,22 @@ std::optional<sculpt::ToolMotion> make_motion(const SculptPanel::Settings& s, st
   if (!(s.axis.norm() > 0)) problem = "the rotation axis must not be zero";
   return problem.empty() ? std::optional(sculpt::ToolMotion::rotation(s.axis, s.degrees * M_PI / 180, s.center))
                          : std::nullopt;
+}
+
+/// `tool` turned by `rotation` about `pivot` (a point of the part's rest frame that stays).
+sculpt::Tool turned(sculpt::Tool tool, const Eigen::Quaterniond& rotation, const Eigen::Vector3d& pivot) {
+  sculpt::ToolPose pose = tool.pose();
+  pose.rotation = (rotation * pose.rotation).normalized();
+  pose.translation = pivot + rotation * (pose.translation - pivot);
+  tool.set_pose(pose);
+  return tool;
+}
+
+/// An ImGui color for ring `axis` (red x, green y, blue z, as the part gizmo's), amber if hot,
+/// faint if it cannot be picked.
+ImU32 ring_color(int axis, bool hot, bool faint) {
+  if (hot) return IM_COL32(250, 200, 30, 255);
+  return IM_COL32(axis == 0 ? 230 : 40, axis == 1 ? 190 : 40, axis == 2 ? 240 : 40, faint ? 70 : 255);
 }
 
 sculpt::StrokeOptions stroke_options(const SculptPanel::Settings& s) {
@@ -69,10 +86,10 @@ std::optional<sculpt::Tool> SculptPanel::make_tool(const Studio& studio, geometr
   switch (s.shape) {
     case 0:
       if (shape) *shape = geometry::make_sphere(s.size.x(), kToolSubdivisions);
-      return sculpt::Tool::sphere(s.size.x(), s.center, s.coating);
+      return turned(sculpt::Tool::sphere(s.size.x(), s.center, s.coating), s.rotation, s.center);
     case 1:
       if (shape) *shape = geometry::make_box(s.size);
-      return sculpt::Tool::box(s.size, s.center, s.coating);
+      return turned(sculpt::Tool::box(s.size, s.center, s.coating), s.rotation, s.center);
     case 2:
       if (shape) {
         const double half = s.size.y() / 2;
@@ -80,12 +97,12 @@ std::optional<sculpt::Tool> SculptPanel::make_tool(const Studio& studio, geometr
           return Eigen::Vector3d(p.x(), p.y(), p.z() + (p.z() >= 0 ? half : -half));
         });
       }
-      return sculpt::Tool::capsule(s.size.x(), s.size.y(), s.center, s.coating);
+      return turned(sculpt::Tool::capsule(s.size.x(), s.size.y(), s.center, s.coating), s.rotation, s.center);
     case 3:
       if (shape)
         *shape = mapped(geometry::make_sphere(1.0, kToolSubdivisions),
                         [&](const Eigen::Vector3d& p) { return Eigen::Vector3d(p.cwiseProduct(s.size)); });
-      return sculpt::Tool::ellipsoid(s.size, s.center, s.coating);
+      return turned(sculpt::Tool::ellipsoid(s.size, s.center, s.coating), s.rotation, s.center);
     default: break;
   }
   // A part baked as the tool, where it is now, in the sculpted part's rest frame.
@@ -104,8 +121,9 @@ std::optional<sculpt::Tool> SculptPanel::make_tool(const Studio& studio, geometr
     problem = tool_part.name + " is not closed: it cannot be baked as a tool";
     return std::nullopt;
   }
-  if (origin) *origin = geometry::bounding_box(baked.V).center();
-  sculpt::Tool tool = sculpt::Tool::baked(baked, s.coating);
+  const Eigen::Vector3d box_center = geometry::bounding_box(baked.V).center();
+  if (origin) *origin = box_center;
+  sculpt::Tool tool = turned(sculpt::Tool::baked(baked, s.coating), s.rotation, box_center);
   if (shape) *shape = std::move(baked);
   return tool;
 }
@@ -137,6 +155,50 @@ void SculptPanel::add_to_draw_list(const Studio& studio, render::DrawList& list)
   item.color = stroke_ && stroke_->stopped ? Eigen::Vector3f(0.9f, 0.2f, 0.15f) : Eigen::Vector3f(0.95f, 0.6f, 0.15f);
   item.opacity = 0.35f;
   list.meshes.push_back(std::move(item));
+}
+
+std::optional<ToolRings> SculptPanel::rings(const Studio& studio) const {
+  if (!mode_ || !studio.document() || studio.selected_part() < 0) return std::nullopt;
+  std::string problem;
+  Eigen::Vector3d origin = stroke_ ? stroke_->tool_origin : Eigen::Vector3d::Zero();
+  const std::optional<sculpt::Tool> tool =
+      stroke_ ? std::optional(stroke_->tool) : make_tool(studio, nullptr, &origin, problem);
+  const std::optional<Eigen::Isometry3d> to_world = stroke_ ? std::optional(stroke_->to_world) : part_to_world(studio);
+  if (!tool || !to_world) return std::nullopt;
+  // How far the tool reaches from its center: half its box's diagonal, the coating left out.
+  const Eigen::Array3d sizes = tool->field_box().sizes().array() - 2 * tool->coating();
+  const Eigen::Matrix3d axes = to_world->linear() * tool->pose().rotation.toRotationMatrix();
+  const Layout& layout = studio.layout();
+  return ToolRings::around(studio.camera(), static_cast<int>(layout.viewport_max.y - layout.viewport_min.y),
+                           *to_world * tool->pose().to_world(origin), axes, sizes.max(0).matrix().norm() / 2);
+}
+
+std::optional<int> SculptPanel::ring_at(const Studio& studio, const ImVec2& at) const {
+  const std::optional<ToolRings> tool_rings = rings(studio);
+  return tool_rings ? ring_at(studio, *tool_rings, at) : std::nullopt;
+}
+
+std::optional<int> SculptPanel::ring_at(const Studio& studio, const ToolRings& tool_rings, const ImVec2& at) {
+  const Layout& layout = studio.layout();
+  return tool_rings.hit(studio.camera(), static_cast<int>(layout.viewport_max.x - layout.viewport_min.x),
+                        static_cast<int>(layout.viewport_max.y - layout.viewport_min.y),
+                        {at.x - layout.viewport_min.x, at.y - layout.viewport_min.y});
+}
+
+void SculptPanel::draw_rings(const Studio& studio, ImDrawList* draw) const {
+  const std::optional<ToolRings> tool_rings = rings(studio);
+  if (!tool_rings) return;
+  const int hot = stroke_   ? stroke_->ring.value_or(-1)
+                  : placing_ ? -1
+                             : ring_at(studio, *tool_rings, ImGui::GetIO().MousePos).value_or(-1);
+  for (int axis = 0; axis < 3; ++axis) {
+    std::vector<ImVec2> points;
+    for (const Eigen::Vector3d& point : tool_rings->ring(axis))
+      if (const std::optional<ImVec2> at = studio.viewport_point(point)) points.push_back(*at);
+    if (points.size() >= 2)
+      draw->AddPolyline(points.data(), static_cast<int>(points.size()),
+                        ring_color(axis, hot == axis, tool_rings->edge_on(studio.camera(), axis)), 0, 2.0f);
+  }
 }
 
 // ---- a stroke by numbers -------------------------------------------------------------------
@@ -201,7 +263,7 @@ void SculptPanel::place_tool(Studio& studio, const view::Ray& ray) {
   settings_.center = to_world->inverse() * *hit;
 }
 
-bool SculptPanel::start_stroke(Studio& studio, const view::Ray& ray) {
+bool SculptPanel::start_stroke(Studio& studio, const view::Ray& ray, std::optional<int> ring) {
   const std::optional<Eigen::Isometry3d> to_world = part_to_world(studio);
   if (!to_world) return false;
   geometry::Mesh shape;
@@ -214,7 +276,8 @@ bool SculptPanel::start_stroke(Studio& studio, const view::Ray& ray) {
   }
   const geometry::Mesh world_shape =
       mapped(shape, [&](const Eigen::Vector3d& p) { return Eigen::Vector3d(*to_world * tool->pose().to_world(p)); });
-  if (!hit_part(studio, ray) && !view::ray_mesh(ray, world_shape.V, world_shape.F)) return false;
+  const std::optional<ToolRings> tool_rings = ring ? rings(studio) : std::nullopt;
+  if (!tool_rings && !hit_part(studio, ray) && !view::ray_mesh(ray, world_shape.V, world_shape.F)) return false;
   const scene::Part& part = studio.document()->scene().parts[studio.selected_part()];
   Stroke stroke{.part = part.name, .mesh = part.mesh, .tool = *tool};
   stroke.index = sculpt::MeshIndex(stroke.mesh);
@@ -224,6 +287,13 @@ bool SculptPanel::start_stroke(Studio& studio, const view::Ray& ray) {
   const Eigen::Vector3d center = *to_world * tool->pose().to_world(origin);
   const std::optional<double> s = view::ray_plane(ray, center, stroke.plane_normal);
   stroke.last_point = s ? Eigen::Vector3d(ray.origin + *s * ray.direction) : center;
+  if (tool_rings) {
+    stroke.ring = ring;
+    stroke.turn_axis = tool_rings->axes.col(*ring);
+  } else if (drag_mode == DragMode::kTurn) {
+    stroke.turn_axis = stroke.plane_normal;
+  }
+  stroke.last_mouse = {ImGui::GetIO().MousePos.x, ImGui::GetIO().MousePos.y};
   stroke_ = std::move(stroke);
   return true;
 }
@@ -250,29 +320,32 @@ void SculptPanel::continue_stroke(Studio& studio, const view::Ray& ray) {
   Stroke& s = *stroke_;
   if (s.stopped) return;
   const Eigen::Matrix3d to_rest = s.to_world.linear().transpose();
-  const Eigen::Vector3d center_rest = s.tool.pose().to_world(s.tool_origin);
   bool moved = false;
-  if (drag_mode == DragMode::kMove) {
-    if (const std::optional<double> t = view::ray_plane(ray, s.last_point, s.plane_normal)) {
-      const Eigen::Vector3d point = ray.origin + *t * ray.direction;
-      const Eigen::Vector3d d = to_rest * (point - s.last_point);
-      s.last_point = point;
-      if (d.norm() > 0) moved = move_tool(studio, sculpt::ToolMotion::translation(d));
-    }
-  } else if (const std::optional<ImVec2> at = studio.viewport_point(s.to_world * center_rest)) {
-    const ImVec2 mouse = ImGui::GetIO().MousePos;
-    const double angle = std::atan2(mouse.y - at->y, mouse.x - at->x);
-    if (s.last_angle && angle != *s.last_angle) {
-      const double turn = std::remainder(angle - *s.last_angle, 2 * M_PI);  // clockwise on screen: about the view axis
-      moved = move_tool(studio, sculpt::ToolMotion::rotation(to_rest * s.plane_normal, turn, center_rest));
-    }
-    s.last_angle = angle;
+  if (s.turn_axis) {
+    moved = turn_tool(studio);
+  } else if (const std::optional<double> t = view::ray_plane(ray, s.last_point, s.plane_normal)) {
+    const Eigen::Vector3d point = ray.origin + *t * ray.direction;
+    const Eigen::Vector3d d = to_rest * (point - s.last_point);
+    s.last_point = point;
+    if (d.norm() > 0) moved = move_tool(studio, sculpt::ToolMotion::translation(d));
   }
   const float wheel = ImGui::GetIO().MouseWheel;
   if (wheel != 0 && !s.stopped)
     moved = move_tool(studio, sculpt::ToolMotion::scaling(std::pow(kWheelScale, wheel), s.tool.pose().to_world(s.tool_origin))) ||
             moved;
   if (moved) show_live(studio);
+}
+
+bool SculptPanel::turn_tool(Studio& studio) {
+  Stroke& s = *stroke_;
+  const Eigen::Vector3d center_rest = s.tool.pose().to_world(s.tool_origin);
+  const Eigen::Vector2d mouse(ImGui::GetIO().MousePos.x, ImGui::GetIO().MousePos.y);
+  const std::optional<ImVec2> at = studio.viewport_point(s.to_world * center_rest);
+  const double turn = at ? swept_turn({at->x, at->y}, s.last_mouse, mouse, *s.turn_axis, s.plane_normal) : 0;
+  s.last_mouse = mouse;
+  if (turn == 0) return false;
+  const Eigen::Vector3d axis_rest = s.to_world.linear().transpose() * *s.turn_axis;
+  return move_tool(studio, sculpt::ToolMotion::rotation(axis_rest, turn, center_rest));
 }
 
 void SculptPanel::show_live(Studio& studio) {
@@ -290,6 +363,7 @@ void SculptPanel::finish_stroke(Studio& studio) {
   stroke_.reset();
   if (s.moves == 0) return;
   settings_.center = s.tool.pose().to_world(s.tool_origin);  // the next stroke starts where this one ended
+  settings_.rotation = s.tool.pose().rotation.normalized();   // as turned
   if (settings_.shape != 4) settings_.size *= s.tool.pose().scale;
   if (!s.stopped)
     studio.set_status(fmt::format("sculpted {}: {} moves, {} sub-steps, {} vertex moves, least det J {:.3g}", s.part,
@@ -318,7 +392,8 @@ bool SculptPanel::handle_mouse(Studio& studio, const view::Ray& ray, bool hovere
     place_tool(studio, ray);
     return true;
   }
-  return ImGui::IsMouseClicked(ImGuiMouseButton_Left) && start_stroke(studio, ray);
+  return ImGui::IsMouseClicked(ImGuiMouseButton_Left) &&
+         start_stroke(studio, ray, ring_at(studio, ImGui::GetIO().MousePos));
 }
 
 // ---- the inspector's section ---------------------------------------------------------------
@@ -333,7 +408,18 @@ void SculptPanel::draw_mode_controls(Studio& studio) {
   ImGui::SameLine();
   ImGui::RadioButton("turn", &mode, 1);
   drag_mode = static_cast<DragMode>(mode);
-  ImGui::TextDisabled("right-drag: place on the surface; left-drag: sculpt, wheel: scale");
+  ImGui::TextDisabled("right-drag: place on the surface; left-drag: sculpt (on a ring: turn), wheel: scale");
+}
+
+void SculptPanel::draw_rotation_fields() {
+  AxisAngle shown = axis_angle_of(settings_.rotation);
+  ImGui::InputScalarN("tool axis", ImGuiDataType_Double, shown.axis.data(), 3, nullptr, nullptr, "%.3f");
+  bool edited = ImGui::IsItemDeactivatedAfterEdit();
+  ImGui::InputDouble("tool degrees", &shown.degrees, 0, 0, "%.2f");
+  edited = ImGui::IsItemDeactivatedAfterEdit() || edited;
+  if (const std::optional<Eigen::Quaterniond> q = edited ? rotation_of(shown) : std::nullopt) settings_.rotation = *q;
+  ImGui::SameLine();
+  if (ImGui::SmallButton("unturn")) settings_.rotation = Eigen::Quaterniond::Identity();
 }
 
 void SculptPanel::draw(Studio& studio) {
@@ -364,6 +450,7 @@ void SculptPanel::draw(Studio& studio) {
     if (ImGui::SmallButton("part center"))
       s.center = geometry::bounding_box(studio.document()->scene().parts[studio.selected_part()].mesh.V).center();
   }
+  if (s.shape != 0) draw_rotation_fields();
   int mirror = s.mirror + 1;
   const char* mirrors[] = {"no mirror", "mirror x = 0", "mirror y = 0", "mirror z = 0"};
   if (ImGui::Combo("mirror", &mirror, mirrors, 4)) s.mirror = mirror - 1;

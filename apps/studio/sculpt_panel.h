@@ -5,10 +5,12 @@
 /// Apply button) and the sculpt mode (K): the tool drawn translucent in the viewport,
 /// right-drag puts it on the part's surface under the mouse without deforming, left-drag
 /// deforms — the tool follows the mouse in the view plane (or turns about the view axis in
-/// rotate mode), the mouse wheel scales it while the button is held. Each stroke (press to
+/// turn mode), a left-drag on one of its three rings (tool_rings.h) turns it about that
+/// ring's axis, the mouse wheel scales it while the button is held. Each stroke (press to
 /// release) is one undoable edit of the part's mesh, replaced frame by frame while the
 /// collision service re-detects the part's transitions; a refused sub-step stops the stroke
-/// at its last good state. Its own state, drawn by `draw` (like pip_panel.h).
+/// at its last good state. The next stroke starts with the tool where the last one left it,
+/// as big and as turned. Its own state, drawn by `draw` (like pip_panel.h).
 
 #include <imgui.h>
 
@@ -24,6 +26,7 @@
 #include "reconfig/sculpt/tool.h"
 #include "reconfig/sculpt/tool_motion.h"
 #include "reconfig/view/picking.h"
+#include "tool_rings.h"
 
 namespace reconfig::studio {
 
@@ -32,8 +35,8 @@ class Studio;
 class SculptPanel {
  public:
   /// The tool and a stroke by numbers, in the selected part's rest frame: a tool of `shape`
-  /// at `center` moved by one translation, scaling (about its center) or rotation (about an
-  /// axis through its center), mirrored in a coordinate plane if asked.
+  /// at `center`, turned by `rotation`, moved by one translation, scaling (about its center)
+  /// or rotation (about an axis through its center), mirrored in a coordinate plane if asked.
   struct Settings {
     /// 0 sphere (radius size.x), 1 box (edge lengths), 2 capsule (radius, length), 3 ellipsoid
     /// (semi-axes), 4 another part of the design baked as a tool (`tool_part`, where it is now)
@@ -41,6 +44,9 @@ class SculptPanel {
     Eigen::Vector3d size = Eigen::Vector3d::Constant(0.05);
     double coating = 0.05;
     Eigen::Vector3d center = Eigen::Vector3d::Zero();
+    /// The tool's orientation: its own axes turned by this (about its center; a baked part
+    /// about the center of its box, from where it is now)
+    Eigen::Quaterniond rotation = Eigen::Quaterniond::Identity();
     int tool_part = -1;  ///< shape 4: the part baked as the tool
     int stroke = 0;      ///< 0 translate, 1 scale, 2 rotate
     Eigen::Vector3d translation = Eigen::Vector3d(0, 0, 0.02);
@@ -69,11 +75,17 @@ class SculptPanel {
   bool mode() const { return mode_; }
   DragMode drag_mode = DragMode::kMove;
   /// The viewport's mouse in sculpt mode: right press on the part starts placing the tool,
-  /// left press on the part or the tool starts a stroke, and the drags they start. Called
-  /// before the viewport's own handling. @return whether it took the mouse this frame
+  /// left press on a ring, the part or the tool starts a stroke, and the drags they start.
+  /// Called before the viewport's own handling. @return whether it took the mouse this frame
   bool handle_mouse(Studio& studio, const view::Ray& ray, bool hovered);
   /// The tool, translucent, where it is (in sculpt mode).
   void add_to_draw_list(const Studio& studio, render::DrawList& list) const;
+  /// The tool's rings (in sculpt mode, with a tool), about its own axes in the world.
+  std::optional<ToolRings> rings(const Studio& studio) const;
+  /// The ring drawn under the screen point `at` (ImGui coordinates), if any.
+  std::optional<int> ring_at(const Studio& studio, const ImVec2& at) const;
+  /// Draws the rings over the viewport's picture (the hovered or dragged one highlighted).
+  void draw_rings(const Studio& studio, ImDrawList* draw) const;
   /// The inspector's Sculpt section.
   void draw(Studio& studio);
 
@@ -92,8 +104,11 @@ class SculptPanel {
     Eigen::Vector3d tool_origin = Eigen::Vector3d::Zero();  ///< the tool's center in its own frame
     Eigen::Isometry3d to_world = Eigen::Isometry3d::Identity();  ///< the part's placement
     Eigen::Vector3d last_point = Eigen::Vector3d::Zero();  ///< the mouse on the drag plane (world)
-    Eigen::Vector3d plane_normal = Eigen::Vector3d::UnitZ();
-    std::optional<double> last_angle = {};  ///< rotate mode: the mouse's angle about the tool (screen)
+    Eigen::Vector3d plane_normal = Eigen::Vector3d::UnitZ();  ///< the view direction (world)
+    /// A turning stroke's axis (world): the view direction in turn mode, a ring's axis
+    std::optional<Eigen::Vector3d> turn_axis = {};
+    std::optional<int> ring = {};       ///< the ring dragged
+    Eigen::Vector2d last_mouse = Eigen::Vector2d::Zero();  ///< where the mouse was (screen)
     std::uint64_t live_version = 0;    ///< the design version the stroke's edit made
     bool live = false;                 ///< its edit is applied (replaced by the next move)
     bool stopped = false;              ///< refused: the rest of the drag changes nothing
@@ -104,13 +119,20 @@ class SculptPanel {
   /// The settings' tool in the part's rest frame and its shape in its own frame, or a message.
   std::optional<sculpt::Tool> make_tool(const Studio& studio, geometry::Mesh* shape, Eigen::Vector3d* origin,
                                         std::string& problem) const;
+  /// The ring of `tool_rings` drawn under the screen point `at`, if any.
+  static std::optional<int> ring_at(const Studio& studio, const ToolRings& tool_rings, const ImVec2& at);
   /// The selected part's placement now (rest frame → world).
   std::optional<Eigen::Isometry3d> part_to_world(const Studio& studio) const;
   /// Where `ray` first meets the selected part (world), if it does.
   std::optional<Eigen::Vector3d> hit_part(const Studio& studio, const view::Ray& ray) const;
   void place_tool(Studio& studio, const view::Ray& ray);
-  bool start_stroke(Studio& studio, const view::Ray& ray);
+  /// A stroke from the mouse at `ray`: a turn about `ring`'s axis, or (on the part or the
+  /// tool only) a move or a turn as `drag_mode` says. @return whether it started
+  bool start_stroke(Studio& studio, const view::Ray& ray, std::optional<int> ring);
   void continue_stroke(Studio& studio, const view::Ray& ray);
+  /// The turn the mouse swept round the tool's center since the last frame. @return whether
+  ///   the mesh changed
+  bool turn_tool(Studio& studio);
   /// One move of the stroke's tool: deforms the stroke's mesh. @return whether the mesh changed
   ///   (false also when refused: the stroke is then stopped)
   bool move_tool(Studio& studio, const sculpt::ToolMotion& motion);
@@ -118,6 +140,8 @@ class SculptPanel {
   void show_live(Studio& studio);
   void finish_stroke(Studio& studio);
   void draw_mode_controls(Studio& studio);
+  /// The tool's rotation as an axis and an angle (the inspector's way, axis_angle.h).
+  void draw_rotation_fields();
 
   Settings settings_;
   bool mode_ = false;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "axis_angle.h"
 #include "script.h"
 #include "studio.h"
 
@@ -52,6 +53,18 @@ std::string set_center(Studio& studio, const std::vector<std::string>& args) {
   return problem;
 }
 
+/// sculpt-rotation AX AY AZ DEGREES: the tool's rotation (the inspector's tool axis and degrees).
+std::string set_rotation(Studio& studio, const std::vector<std::string>& args) {
+  std::string problem;
+  const Eigen::Vector3d axis(number(args, 0, "axis x", problem), number(args, 1, "axis y", problem),
+                             number(args, 2, "axis z", problem));
+  const AxisAngle rotation{axis, number(args, 3, "degrees", problem)};
+  const std::optional<Eigen::Quaterniond> q = problem.empty() ? rotation_of(rotation) : std::nullopt;
+  if (!q) return problem.empty() ? "the rotation axis must not be zero" : problem;
+  studio.sculpt().settings().rotation = *q;
+  return {};
+}
+
 /// sculpt-view +x|-x|+y|-y|+z: the eye on that side, looking at the target level (straight down
 /// for +z), so drags along the other two axes stay in the view plane.
 std::string set_view(Studio& studio, const std::vector<std::string>& args) {
@@ -84,6 +97,82 @@ std::string place(HeadlessFrontend& frontend, const std::vector<std::string>& ar
   if (!to) return "that point is not in view";
   drag_through(frontend, segment(*from, *to, 4), 1);
   return {};
+}
+
+/// "the drag did not sculpt" unless the document changed since `version` or a move was refused.
+std::string sculpted(Studio& studio, std::uint64_t version) {
+  if (studio.document()->version() == version && studio.status().find("refused") == std::string::npos)
+    return "the drag did not sculpt (not started on the part or the tool?): " + studio.status();
+  return {};
+}
+
+/// `p` at a whole pixel, as ImGui takes the mouse (it floors the position).
+ImVec2 whole_pixel(const ImVec2& p) { return {std::floor(p.x), std::floor(p.y)}; }
+
+/// Where ring `axis` is drawn in the viewport (at a whole pixel) farthest from the tool's
+/// center `at`, under no other ring.
+std::optional<ImVec2> ring_press(Studio& studio, int axis, const ImVec2& at) {
+  const std::optional<ToolRings> rings = studio.sculpt().rings(studio);
+  const Layout& layout = studio.layout();
+  const auto in_view = [&](const ImVec2& p) {
+    return p.x > layout.viewport_min.x && p.x < layout.viewport_max.x && p.y > layout.viewport_min.y &&
+           p.y < layout.viewport_max.y;
+  };
+  std::optional<ImVec2> best;
+  float farthest = 0;
+  for (const Eigen::Vector3d& point : rings ? rings->ring(axis) : std::vector<Eigen::Vector3d>{})
+    if (std::optional<ImVec2> p = studio.viewport_point(point);
+        p && in_view(*p = whole_pixel(*p)) && studio.sculpt().ring_at(studio, *p) == axis) {
+      const float distance = std::hypot(p->x - at.x, p->y - at.y);
+      if (distance > farthest) farthest = distance, best = p;
+    }
+  return best;
+}
+
+/// A mouse path at whole pixels from `from` round `at` by `sweep` radians (pixel angles, y
+/// down) in `steps` frames; of the pixels round its ideal end, it ends at the one whose angle
+/// is nearest.
+std::vector<ImVec2> sweep_path(const ImVec2& at, const ImVec2& from, double sweep, int steps) {
+  const auto angle_of = [&](const ImVec2& p) { return std::atan2(p.y - at.y, p.x - at.x); };
+  const double radius = std::hypot(from.x - at.x, from.y - at.y), start = angle_of(from);
+  const auto miss = [&](const ImVec2& p) { return std::abs(std::remainder(angle_of(p) - start - sweep, 2 * M_PI)); };
+  std::vector<ImVec2> points{from};
+  for (int i = 1; i <= steps; ++i) {
+    const double angle = start + sweep * i / steps;
+    points.push_back(whole_pixel(
+        {at.x + static_cast<float>(radius * std::cos(angle)), at.y + static_cast<float>(radius * std::sin(angle))}));
+  }
+  const ImVec2 end = points.back();
+  for (int dx = -2; dx <= 2; ++dx)
+    for (int dy = -2; dy <= 2; ++dy)
+      if (const ImVec2 p(end.x + dx, end.y + dy); miss(p) < miss(points.back())) points.back() = p;
+  return points;
+}
+
+/// sculpt-ring x|y|z DEGREES [steps N]: a left-drag from the ring round the tool's center on
+/// screen, the way that turns the tool by DEGREES about the ring's axis (tool_rings.h).
+std::string ring_drag(HeadlessFrontend& frontend, const std::vector<std::string>& args) {
+  Studio& studio = frontend.studio();
+  if (args.size() != 2 && !(args.size() == 4 && args[2] == "steps"))
+    return "sculpt-ring x|y|z DEGREES [steps N]";
+  const int axis = args[0] == "x" ? 0 : args[0] == "y" ? 1 : args[0] == "z" ? 2 : -1;
+  if (axis < 0) return fmt::format("unknown ring \"{}\" (x, y, z)", args[0]);
+  std::string problem;
+  const double radians = number(args, 1, "degrees", problem) * M_PI / 180;
+  // Less than a half turn a frame, so each frame's sweep is the one meant.
+  const int steps = std::max({1, args.size() == 4 ? static_cast<int>(number(args, 3, "steps", problem)) : 8,
+                              static_cast<int>(std::ceil(std::abs(radians) / (M_PI / 2)))});
+  const std::optional<ImVec2> at = tool_on_screen(studio, problem);
+  if (!problem.empty()) return problem;
+  const std::optional<ImVec2> from = ring_press(studio, axis, *at);
+  if (!from) return fmt::format("the tool's {} ring is seen edge-on or not in view", args[0]);
+  // swept_turn's sign, undone: a positive screen sweep turns about an axis pointing away.
+  const bool away = studio.sculpt().rings(studio)->axes.col(axis).dot(studio.camera().forward()) >= 0;
+  const double sweep = away ? radians : -radians;
+  const std::vector<ImVec2> points = sweep_path(*at, *from, sweep, steps);
+  const std::uint64_t version = studio.document()->version();
+  drag_through(frontend, points, 0);
+  return sculpted(studio, version);
 }
 
 std::string stroke(HeadlessFrontend& frontend, const std::vector<std::string>& args, bool turn) {
@@ -119,9 +208,7 @@ std::string stroke(HeadlessFrontend& frontend, const std::vector<std::string>& a
   const std::uint64_t version = studio.document()->version();
   drag_through(frontend, points, 0, wheel);
   studio.sculpt().drag_mode = SculptPanel::DragMode::kMove;
-  if (studio.document()->version() == version && studio.status().find("refused") == std::string::npos)
-    return "the drag did not sculpt (not started on the part or the tool?): " + studio.status();
-  return {};
+  return sculpted(studio, version);
 }
 
 }  // namespace
@@ -134,10 +221,12 @@ bool perform_sculpt_action(HeadlessFrontend& frontend, const std::string& action
   else if (action == "sculpt-mode") problem = set_mode(studio, args);
   else if (action == "sculpt-tool") problem = set_tool(studio, args);
   else if (action == "sculpt-center") problem = set_center(studio, args);
+  else if (action == "sculpt-rotation") problem = set_rotation(studio, args);
   else if (action == "sculpt-view") problem = set_view(studio, args);
   else if (action == "sculpt-place") problem = place(frontend, args);
   else if (action == "sculpt-drag") problem = stroke(frontend, args, false);
   else if (action == "sculpt-turn") problem = stroke(frontend, args, true);
+  else if (action == "sculpt-ring") problem = ring_drag(frontend, args);
   else return false;
   frontend.run_frame();
   return true;

@@ -6,6 +6,7 @@
 ///   sculpt-tool SHAPE SX SY SZ COATING          sphere|box|capsule|ellipsoid and its sizes,
 ///                                               or `part NAME COATING`: a part baked as the tool
 ///   sculpt-center X Y Z                         the tool's center in the part's rest frame
+///   sculpt-rotation AX AY AZ DEGREES            the tool's rotation in the part's rest frame
 ///   sculpt-view +x|-x|+y|-y|+z                  the camera on that side, level (or from above)
 ///   sculpt-place X Y Z                          right-drag from the tool to where world point
 ///                                               (X, Y, Z) is drawn: the tool lands on the part
@@ -13,6 +14,9 @@
 ///                                               moved by (DX, DY, DZ) (world) is drawn, in N
 ///                                               frames (8), W wheel steps half-way
 ///   sculpt-turn DEGREES [steps N]               left-drag in turn mode, round the tool on screen
+///   sculpt-ring x|y|z DEGREES [steps N]         left-drag on the tool's ring about its own x, y
+///                                               or z axis, round the tool's center on screen,
+///                                               turning it by DEGREES about that axis
 
 #include <string>
 #include <vector>

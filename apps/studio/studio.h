@@ -245,6 +245,7 @@ class Studio {
   bool status_window_open() const;
   const Layout& layout() const { return layout_; }
   view::Camera& camera() { return camera_; }
+  const view::Camera& camera() const { return camera_; }
   /// How far a drag of one pixel turns the view (radians): 30° per 100 px, as Blender's orbit,
   /// slow enough for fine work.
   static constexpr double kOrbitPerPixel = 0.3 * std::numbers::pi / 180;

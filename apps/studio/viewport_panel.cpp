@@ -56,6 +56,7 @@ void ViewportPanel::draw(Studio& studio) {
   ImDrawList* draw = ImGui::GetWindowDrawList();
   if (document) {
     draw_gizmo(studio, draw, origin, width, height);
+    studio.sculpt().draw_rings(studio, draw);  // in sculpt mode, instead of the gizmo
     draw_handle_drag(studio, draw, origin, width, height);
     const scene::Reconfigurable& scene = document->scene();
     const int transition = studio.active_transition();

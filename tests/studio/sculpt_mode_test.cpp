@@ -1,15 +1,19 @@
 // The studio's sculpt mode driven through mouse events (headless): left-drags reshape the
 // bench-table's armrests until `unfold` is collision-free, each stroke one undoable edit; a
-// right-drag only places the tool; a refused move stops the stroke at its last good state.
+// right-drag only places the tool; a refused move stops the stroke at its last good state; a
+// drag on one of the tool's rings turns it and the part as the library's rotation stroke does,
+// and the tool keeps its rotation from stroke to stroke.
 
 #include <gtest/gtest.h>
 
 #include <fmt/format.h>
 
+#include "axis_angle.h"
 #include "bench_table_unfold.h"
 #include "reconfig/geometry/primitives.h"
 #include "reconfig/geometry/self_intersections.h"
 #include "reconfig/scene/edits.h"
+#include "reconfig/sculpt/sculpt_stroke.h"
 #include "script.h"
 
 namespace reconfig::studio {
@@ -159,6 +163,139 @@ TEST_F(StudioSculptMode, KTogglesTheModeAndTheWheelScalesTheTool) {
   EXPECT_NEAR(studio().sculpt().settings().size.x(), before * 1.21, 1e-9);
   run_script(*frontend_, "key k\n", "k off");
   EXPECT_FALSE(studio().sculpt().mode());
+}
+
+/// `mesh` after the library's rotation stroke of `tool` by `degrees` about `axis` through its
+/// center, applied directly (the closed form of Sweepers §4.3).
+geometry::Mesh rotated_directly(geometry::Mesh mesh, const sculpt::Tool& tool, const Eigen::Vector3d& axis,
+                                double degrees, const sculpt::StrokeOptions& options = {}) {
+  Eigen::MatrixX3d no_normals(0, 3);
+  const sculpt::ToolMotion turn = sculpt::ToolMotion::rotation(axis, degrees * M_PI / 180, tool.pose().translation);
+  const sculpt::StrokeResult result = sculpt::sculpt_mesh({{tool, turn}}, options, mesh, no_normals);
+  EXPECT_TRUE(result.applied) << result.refusal;
+  return mesh;
+}
+
+TEST_F(StudioSculptMode, ARingDragTurnsTheToolAndThePartAboutTheRingsAxis) {
+  look_from_the_side();  // along −x: the tool's x ring faces the camera
+  studio().select_part(part("armrest_left"));
+  run_script(*frontend_, "sculpt-mode on\nsculpt-tool box 0.2 0.2 0.2 0.08\nsculpt-center 0 -0.25 0\n", "sculpt mode");
+  const Eigen::Vector3d center(0, -0.25, 0);
+  const sculpt::Tool tool = sculpt::Tool::box(Eigen::Vector3d::Constant(0.2), center, 0.08);
+  const geometry::Mesh before = mesh_of("armrest_left");
+  // The rings are about the tool's own axes, drawn round its center; one is under the mouse
+  // where it is drawn, none at the center.
+  const std::optional<ToolRings> rings = studio().sculpt().rings(studio());
+  ASSERT_TRUE(rings);
+  EXPECT_TRUE(rings->axes.isApprox(Eigen::Matrix3d::Identity()));  // the armrest is not turned
+  EXPECT_EQ(studio().sculpt().ring_at(studio(), *studio().viewport_point(rings->ring(0)[5])), 0);
+  EXPECT_FALSE(studio().sculpt().ring_at(studio(), *studio().viewport_point(rings->center)));
+
+  run_script(*frontend_, "sculpt-ring x 20\n", "turn");
+  EXPECT_NE(studio().status().find("sculpted armrest_left"), std::string::npos) << studio().status();
+  // The tool turned by the angle swept round its center on screen about its x axis (20° to
+  // the mouse's precision: ImGui puts it at whole pixels, here some 70 from the center), and
+  // keeps that rotation.
+  const AxisAngle turned = axis_angle_of(studio().sculpt().settings().rotation);
+  EXPECT_NEAR(turned.degrees, 20, 0.1);
+  EXPECT_LT((turned.axis - Eigen::Vector3d::UnitX()).norm(), 1e-6);
+  // The part's vertices: the library's rotation stroke by that angle, applied directly (the back
+  // end's corners, in the tool, turned rigidly; the front's, out of its reach, did not move).
+  const geometry::Mesh once = mesh_of("armrest_left");
+  const geometry::Mesh expected = rotated_directly(before, tool, Eigen::Vector3d::UnitX(), turned.degrees);
+  EXPECT_LT((once.V - expected.V).cwiseAbs().maxCoeff(), 1e-9);
+  EXPECT_GT((once.V - before.V).cwiseAbs().maxCoeff(), 0.01);
+  // What the viewport draws (and shades, with normals from its faces) is the turned mesh.
+  EXPECT_EQ(studio().document()->part_meshes()[part("armrest_left")]->V, once.V);
+
+  // The next drag starts turned: 30° in all.
+  run_script(*frontend_, "sculpt-ring x 10 steps 3\n", "turn on");
+  const AxisAngle total = axis_angle_of(studio().sculpt().settings().rotation);
+  EXPECT_NEAR(total.degrees, 30, 0.2);
+  EXPECT_LT((mesh_of("armrest_left").V - rotated_directly(before, tool, Eigen::Vector3d::UnitX(), total.degrees).V)
+                .cwiseAbs()
+                .maxCoeff(),
+            1e-9);
+  // Each drag is one undoable edit.
+  ASSERT_TRUE(studio().undo());
+  EXPECT_EQ(mesh_of("armrest_left").V, once.V);
+  ASSERT_TRUE(studio().undo());
+  EXPECT_EQ(mesh_of("armrest_left").V, before.V);
+  // Turned the other way round.
+  studio().sculpt().settings().rotation = Eigen::Quaterniond::Identity();
+  run_script(*frontend_, "sculpt-ring x -15\n", "turn back");
+  const AxisAngle back = axis_angle_of(studio().sculpt().settings().rotation);
+  EXPECT_NEAR(back.degrees, 15, 0.1);
+  EXPECT_LT((back.axis + Eigen::Vector3d::UnitX()).norm(), 1e-6);
+  ASSERT_TRUE(studio().undo());
+  // With the mirror plane y = 0 the front end turns the other way, as the library's mirrored
+  // stroke does.
+  studio().sculpt().settings().rotation = Eigen::Quaterniond::Identity();
+  studio().sculpt().settings().mirror = 1;
+  run_script(*frontend_, "sculpt-ring x 20\n", "mirrored");
+  const AxisAngle mirrored = axis_angle_of(studio().sculpt().settings().rotation);
+  sculpt::StrokeOptions mirror;
+  mirror.mirror.axis = 1;
+  const geometry::Mesh both = rotated_directly(before, tool, Eigen::Vector3d::UnitX(), mirrored.degrees, mirror);
+  EXPECT_LT((mesh_of("armrest_left").V - both.V).cwiseAbs().maxCoeff(), 1e-9);
+  const Eigen::MatrixX3d& V = mesh_of("armrest_left").V;
+  for (int v = 0; v < before.vertex_count(); ++v) {
+    EXPECT_GT((V.row(v) - before.V.row(v)).norm(), 0.005) << v;  // both ends turned
+    const Eigen::RowVector3d image = V.row(v).cwiseProduct(Eigen::RowVector3d(1, -1, 1));
+    EXPECT_LT((V.rowwise() - image).rowwise().norm().minCoeff(), 1e-9) << v;  // symmetric about y = 0
+  }
+}
+
+TEST_F(StudioSculptMode, ARefusedTurnStopsTheStrokeAtItsLastGoodState) {
+  // Turning the armrest's rear end round past half a turn would twist its long faces through
+  // each other: a move is refused, and the stroke keeps the turn it had.
+  look_from_the_side();
+  studio().select_part(part("armrest_left"));
+  run_script(*frontend_, "sculpt-mode on\nsculpt-tool box 0.2 0.2 0.2 0.08\nsculpt-center 0 -0.25 0\n", "sculpt mode");
+  const geometry::Mesh before = mesh_of("armrest_left");
+  run_script(*frontend_, "sculpt-ring x 270 steps 12\n", "too far");
+  EXPECT_NE(studio().status().find("refused"), std::string::npos) << studio().status();
+  EXPECT_NE(mesh_of("armrest_left").V, before.V);
+  const AxisAngle kept = axis_angle_of(studio().sculpt().settings().rotation);
+  EXPECT_GT(kept.degrees, 10);
+  EXPECT_LT(kept.degrees, 180);
+  EXPECT_TRUE(geometry::find_self_intersections(mesh_of("armrest_left"), 1).pairs.empty());
+  ASSERT_TRUE(studio().undo());  // the stroke is one edit
+  EXPECT_EQ(mesh_of("armrest_left").V, before.V);
+}
+
+TEST_F(StudioSculptMode, TheToolsRotationTurnsABoxToolAndItsRings) {
+  look_from_the_side();
+  studio().select_part(part("armrest_left"));
+  // A thin box tool on the front end's upper corner (0.025, 0.19, 0.02), long along z before
+  // it is turned (the lower corner, 4 cm below, would be in it), along −y after.
+  run_script(*frontend_,
+             "sculpt-mode on\nsculpt-tool box 0.01 0.01 0.1 0.01\nsculpt-center 0.025 0.19 0.02\n"
+             "sculpt-rotation 1 0 0 90\n",
+             "turned tool");
+  const std::optional<ToolRings> rings = studio().sculpt().rings(studio());
+  ASSERT_TRUE(rings);
+  EXPECT_LT((rings->axes.col(2) - Eigen::Vector3d(0, -1, 0)).norm(), 1e-12);
+  const geometry::Mesh before = mesh_of("armrest_left");
+  int upper = -1, lower = -1;
+  for (int v = 0; v < before.vertex_count(); ++v) {
+    if ((before.V.row(v) - Eigen::RowVector3d(0.025, 0.19, 0.02)).norm() < 1e-12) upper = v;
+    if ((before.V.row(v) - Eigen::RowVector3d(0.025, 0.19, -0.02)).norm() < 1e-12) lower = v;
+  }
+  ASSERT_GE(upper, 0);
+  ASSERT_GE(lower, 0);
+  run_script(*frontend_, drag_line({0, 0, 0.01}, 4), "drag");
+  const Eigen::Vector3d moved = studio().sculpt().settings().center - Eigen::Vector3d(0.025, 0.19, 0.02);
+  EXPECT_GT(moved.norm(), 0.005);
+  const geometry::Mesh& after = mesh_of("armrest_left");
+  EXPECT_LT((after.V.row(upper) - before.V.row(upper) - moved.transpose()).norm(), 1e-12);  // in the tool
+  EXPECT_EQ(after.V.row(lower), before.V.row(lower));  // beyond the turned tool's coating
+  // The rotation stays for the next stroke.
+  const AxisAngle kept = axis_angle_of(studio().sculpt().settings().rotation);
+  EXPECT_NEAR(kept.degrees, 90, 1e-9);
+  EXPECT_LT((kept.axis - Eigen::Vector3d::UnitX()).norm(), 1e-9);
+  EXPECT_THROW(run_script(*frontend_, "sculpt-rotation 0 0 0 30\n", "zero axis"), ScriptError);
+  EXPECT_THROW(run_script(*frontend_, "sculpt-ring w 30\n", "no such ring"), ScriptError);
 }
 
 }  // namespace
