@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sculpt/detail/sort_unique.h"
+
 namespace reconfig::sculpt {
 namespace {
 
@@ -12,12 +14,13 @@ constexpr int kEdgeSample = 4096;           ///< faces sampled for the mean edge
 /// hash look-up) and a cell holds a few hundred vertices of a surface.
 constexpr double kEdgesPerCell = 8;
 
-double mean_edge_length(const geometry::Mesh& mesh) {
+double mean_edge_length(const Eigen::Ref<const Eigen::MatrixX3d>& V, const Eigen::Ref<const Eigen::MatrixX3i>& F) {
   double sum = 0;
   int count = 0;
-  const int step = std::max(1, mesh.face_count() / kEdgeSample);
-  for (int f = 0; f < mesh.face_count(); f += step)
-    for (int i = 0; i < 3; ++i, ++count) sum += (mesh.V.row(mesh.F(f, i)) - mesh.V.row(mesh.F(f, (i + 1) % 3))).norm();
+  const int faces = static_cast<int>(F.rows());
+  const int step = std::max(1, faces / kEdgeSample);
+  for (int f = 0; f < faces; f += step)
+    for (int i = 0; i < 3; ++i, ++count) sum += (V.row(F(f, i)) - V.row(F(f, (i + 1) % 3))).norm();
   return count > 0 ? sum / count : 0;
 }
 
@@ -30,14 +33,15 @@ void erase(std::vector<int>& list, int value) {
 
 }  // namespace
 
-MeshIndex::MeshIndex(const geometry::Mesh& mesh, double cell) {
-  const double edge = mean_edge_length(mesh);
+MeshIndex::MeshIndex(const Eigen::Ref<const Eigen::MatrixX3d>& V, const Eigen::Ref<const Eigen::MatrixX3i>& F,
+                     double cell) {
+  const double edge = mean_edge_length(V, F);
   cell_ = cell > 0 ? cell : edge > 0 ? kEdgesPerCell * edge : 1;
-  vertex_faces_.reserve(mesh.vertex_count());
-  for (int v = 0; v < mesh.vertex_count(); ++v) add_vertex(mesh.V.row(v).transpose());
-  for (int f = 0; f < mesh.face_count(); ++f)
-    for (int i = 0; i < 3; ++i) vertex_faces_[mesh.F(f, i)].push_back(f);
-  faces_ = mesh.face_count();
+  vertex_faces_.reserve(V.rows());
+  for (int v = 0; v < V.rows(); ++v) add_vertex(V.row(v).transpose());
+  for (int f = 0; f < F.rows(); ++f)
+    for (int i = 0; i < 3; ++i) vertex_faces_[F(f, i)].push_back(f);
+  faces_ = static_cast<int>(F.rows());
 }
 
 std::array<int, 3> MeshIndex::cell_of(const Eigen::Vector3d& p) const {
@@ -55,7 +59,7 @@ std::int64_t MeshIndex::key(const std::array<int, 3>& c) {
   return k;
 }
 
-std::vector<int> MeshIndex::vertices_in(const Eigen::AlignedBox3d& box, const Eigen::MatrixX3d& V) const {
+std::vector<int> MeshIndex::vertices_in(const Eigen::AlignedBox3d& box, const Eigen::Ref<const Eigen::MatrixX3d>& V) const {
   std::vector<int> found;
   if (box.isEmpty() || high_[0] < low_[0]) return found;
   std::array<int, 3> from = cell_of(box.min()), to = cell_of(box.max());
@@ -79,7 +83,7 @@ std::vector<int> MeshIndex::vertices_in(const Eigen::AlignedBox3d& box, const Ei
           if (const auto at = cells_.find(key({x, y, z})); at != cells_.end()) collect(at->second);
         }
   }
-  std::sort(found.begin(), found.end());
+  detail::sort_unique(found, static_cast<int>(V.rows()));
   return found;
 }
 

@@ -1,6 +1,7 @@
 #include "reconfig/sculpt/remesh_in_box.h"
 
 #include "sculpt/detail/remesh.h"
+#include "sculpt/detail/sort_unique.h"
 
 #include <algorithm>
 #include <optional>
@@ -18,8 +19,7 @@ constexpr int kMaxPasses = 8;
 /// numbers in the order of the mesh's, then the new faces), the vertices by their index in the
 /// mesh (new ones numbered after its last), so a remesh costs little beyond the box.
 struct Work {
-  Eigen::MatrixX3d& mesh_V;
-  Eigen::MatrixX3d& mesh_N;
+  SculptMesh& mesh;
   int original_vertices = 0;
   std::vector<Eigen::Vector3d> new_V = {}, new_N = {};
   std::vector<std::array<int, 3>> F = {};  ///< a removed face has F[f][0] = −1
@@ -37,21 +37,21 @@ struct Work {
   }
 
   Eigen::Vector3d position(int v) const {
-    return v < original_vertices ? Eigen::Vector3d(mesh_V.row(v)) : new_V[v - original_vertices];
+    return v < original_vertices ? Eigen::Vector3d(mesh.V().row(v)) : new_V[v - original_vertices];
   }
   Eigen::Vector3d normal(int v) const {
     if (!normals) return Eigen::Vector3d::Zero();
-    return v < original_vertices ? Eigen::Vector3d(mesh_N.row(v)) : new_N[v - original_vertices];
+    return v < original_vertices ? Eigen::Vector3d(mesh.N().row(v)) : new_N[v - original_vertices];
   }
   void set_position(int v, const Eigen::Vector3d& p) {
     remember(v);
-    if (v < original_vertices) mesh_V.row(v) = p.transpose();
+    if (v < original_vertices) mesh.V().row(v) = p.transpose();
     else new_V[v - original_vertices] = p;
   }
   void set_normal(int v, const Eigen::Vector3d& n) {
     if (!normals) return;
     remember(v);
-    if (v < original_vertices) mesh_N.row(v) = n.transpose();
+    if (v < original_vertices) mesh.N().row(v) = n.transpose();
     else new_N[v - original_vertices] = n;
   }
   int vertex_count() const { return original_vertices + static_cast<int>(new_V.size()); }
@@ -141,8 +141,7 @@ int split_pass(Work& work, const Eigen::AlignedBox3d& box, double max_edge) {
     next.insert(next.end(), {static_cast<int>(work.F.size()) - 2, static_cast<int>(work.F.size()) - 1});
     ++splits;
   }
-  std::sort(next.begin(), next.end());
-  next.erase(std::unique(next.begin(), next.end()), next.end());
+  detail::sort_unique(next, static_cast<int>(work.F.size()));
   work.candidates = std::move(next);
   return splits;
 }
@@ -229,33 +228,34 @@ namespace {
 
 /// Puts the work back into the mesh: the changed faces in place and the new ones after them;
 /// the faces collapses removed stay (their numbers go to `changes`) for `compact` to drop.
-void write_back(const Work& work, geometry::Mesh& mesh, Eigen::MatrixX3d& N, detail::RemeshChanges& changes) {
+void write_back(const Work& work, SculptMesh& mesh, detail::RemeshChanges& changes) {
   const int old_faces = mesh.face_count(), added = static_cast<int>(work.F.size() - work.original_face.size());
   for (const auto& [v, values] : work.first_values) {
     changes.moved.push_back(v);
     changes.moved_from.push_back(values.first);
     changes.moved_normal_from.push_back(values.second);
   }
-  mesh.V.conservativeResize(work.vertex_count(), 3);
-  if (work.normals) N.conservativeResize(work.vertex_count(), 3);
+  mesh.resize(work.vertex_count(), old_faces + added);
+  auto V = mesh.V();
+  auto N = mesh.N();
+  auto F = mesh.F();
   for (std::size_t i = 0; i < work.new_V.size(); ++i) {
-    mesh.V.row(work.original_vertices + i) = work.new_V[i].transpose();
+    V.row(work.original_vertices + i) = work.new_V[i].transpose();
     if (work.normals) N.row(work.original_vertices + i) = work.new_N[i].transpose();
   }
-  mesh.F.conservativeResize(old_faces + added, 3);
   for (std::size_t f = 0; f < work.F.size(); ++f) {
     const bool appended = f >= work.original_face.size();
     const int target = appended ? old_faces + int(f - work.original_face.size()) : work.original_face[f];
     const std::array<int, 3> before =
-        appended ? std::array{-1, -1, -1} : std::array{mesh.F(target, 0), mesh.F(target, 1), mesh.F(target, 2)};
+        appended ? std::array{-1, -1, -1} : std::array{F(target, 0), F(target, 1), F(target, 2)};
     if (before == work.F[f]) continue;
     changes.before.push_back(before);
     changes.faces.push_back(target);
     if (work.F[f][0] < 0) {
       changes.removed_faces.push_back(target);
-      if (appended) mesh.F.row(target) = mesh.F.row(work.original_face.front());  // a valid row until compacted
+      if (appended) F.row(target) = F.row(work.original_face.front());  // a valid row until compacted
     } else {
-      mesh.F.row(target) << work.F[f][0], work.F[f][1], work.F[f][2];
+      F.row(target) << work.F[f][0], work.F[f][1], work.F[f][2];
     }
   }
 }
@@ -264,59 +264,62 @@ void write_back(const Work& work, geometry::Mesh& mesh, Eigen::MatrixX3d& N, det
 
 namespace detail {
 
-void compact(const std::vector<int>& removed_faces, geometry::Mesh& mesh, Eigen::MatrixX3d& N) {
+void compact(const std::vector<int>& removed_faces, SculptMesh& mesh) {
   if (removed_faces.empty()) return;
-  const bool normals = N.rows() == mesh.V.rows();
+  const bool normals = mesh.has_normals();
+  auto V = mesh.V();
+  auto N = mesh.N();
+  auto F = mesh.F();
   std::vector<char> removed(mesh.face_count(), 0);
   for (int f : removed_faces) removed[f] = 1;
   std::vector<int> index(mesh.vertex_count(), -1);
   int faces = 0;
   for (int f = 0; f < mesh.face_count(); ++f)
     if (!removed[f]) {
-      mesh.F.row(faces++) = mesh.F.row(f);
-      for (int c = 0; c < 3; ++c) index[mesh.F(f, c)] = 0;
+      F.row(faces++) = F.row(f);
+      for (int c = 0; c < 3; ++c) index[F(f, c)] = 0;
     }
-  mesh.F.conservativeResize(faces, 3);
   int vertices = 0;
   for (int v = 0; v < mesh.vertex_count(); ++v)
     if (index[v] == 0) {
       index[v] = vertices;
-      mesh.V.row(vertices) = mesh.V.row(v);
+      V.row(vertices) = V.row(v);
       if (normals) N.row(vertices) = N.row(v);
       ++vertices;
     }
-  mesh.V.conservativeResize(vertices, 3);
-  if (normals) N.conservativeResize(vertices, 3);
   for (int f = 0; f < faces; ++f)
-    for (int c = 0; c < 3; ++c) mesh.F(f, c) = index[mesh.F(f, c)];
+    for (int c = 0; c < 3; ++c) F(f, c) = index[F(f, c)];
+  mesh.resize(vertices, faces);
 }
 
 RemeshResult remesh(const Eigen::AlignedBox3d& box, const RemeshOptions& options, const MeshIndex* index,
-                    geometry::Mesh& mesh, Eigen::MatrixX3d& N, RemeshChanges& changes) {
+                    SculptMesh& mesh, RemeshChanges& changes) {
   RemeshResult result;
   changes = {mesh.vertex_count(), mesh.face_count()};
   if (!(options.max_edge > 0)) return result;
-  Work work{mesh.V, N, mesh.vertex_count()};
-  work.normals = N.rows() == mesh.V.rows();
+  Work work{mesh, mesh.vertex_count()};
+  work.normals = mesh.has_normals();
+  const auto V = mesh.V();
+  const auto F = mesh.F();
   work.in_box.resize(mesh.vertex_count());
   std::vector<int> faces;
   if (index) {
-    const std::vector<int> inside = index->vertices_in(box, mesh.V);
+    const std::vector<int> inside = index->vertices_in(box, V);
     for (int v : inside) work.in_box[v] = 1;
     for (int v : inside)  // each face once: from its first corner in the box
       for (int f : index->faces_of(v)) {
         int first = 0;
-        while (!work.in_box[mesh.F(f, first)]) ++first;
-        if (mesh.F(f, first) == v) faces.push_back(f);
+        while (!work.in_box[F(f, first)]) ++first;
+        if (F(f, first) == v) faces.push_back(f);
       }
-    std::sort(faces.begin(), faces.end());
+    detail::sort_unique(faces, mesh.face_count());
   } else {
-    for (int i = 0; i < mesh.vertex_count(); ++i) work.in_box[i] = box.contains(Eigen::Vector3d(mesh.V.row(i)));
+    for (int i = 0; i < mesh.vertex_count(); ++i) work.in_box[i] = box.contains(Eigen::Vector3d(V.row(i)));
     for (int f = 0; f < mesh.face_count(); ++f)
-      if (work.in_box[mesh.F(f, 0)] || work.in_box[mesh.F(f, 1)] || work.in_box[mesh.F(f, 2)]) faces.push_back(f);
+      if (work.in_box[F(f, 0)] || work.in_box[F(f, 1)] || work.in_box[F(f, 2)]) faces.push_back(f);
   }
   for (int f : faces) {
-    work.F.push_back({mesh.F(f, 0), mesh.F(f, 1), mesh.F(f, 2)});
+    work.F.push_back({F(f, 0), F(f, 1), F(f, 2)});
     work.original_face.push_back(f);
   }
   for (int pass = 0; pass < kMaxPasses; ++pass) {
@@ -329,7 +332,7 @@ RemeshResult remesh(const Eigen::AlignedBox3d& box, const RemeshOptions& options
     result.collapses += collapses;
     if (collapses == 0) break;
   }
-  if (result.splits > 0 || result.collapses > 0) write_back(work, mesh, N, changes);
+  if (result.splits > 0 || result.collapses > 0) write_back(work, mesh, changes);
   return result;
 }
 
@@ -337,9 +340,12 @@ RemeshResult remesh(const Eigen::AlignedBox3d& box, const RemeshOptions& options
 
 RemeshResult remesh_in_box(const Eigen::AlignedBox3d& box, const RemeshOptions& options, geometry::Mesh& mesh,
                            Eigen::MatrixX3d& N) {
+  MeshIndex no_index;
+  SculptMesh work = SculptMesh::adopt(std::move(mesh), std::move(N), std::move(no_index));
   detail::RemeshChanges changes;
-  const RemeshResult result = detail::remesh(box, options, nullptr, mesh, N, changes);
-  detail::compact(changes.removed_faces, mesh, N);
+  const RemeshResult result = detail::remesh(box, options, nullptr, work, changes);
+  detail::compact(changes.removed_faces, work);
+  work.release(mesh, N, no_index);
   return result;
 }
 

@@ -20,11 +20,13 @@ class MeshIndex {
  public:
   MeshIndex() = default;
   /// Indexes `mesh`. @param cell  the grid's cell edge (> 0), or 0: eight mean edge lengths
-  explicit MeshIndex(const geometry::Mesh& mesh, double cell = 0);
+  explicit MeshIndex(const geometry::Mesh& mesh, double cell = 0) : MeshIndex(mesh.V, mesh.F, cell) {}
+  /// Indexes the mesh of #V×3 positions V and #F×3 faces F (as the constructor above).
+  MeshIndex(const Eigen::Ref<const Eigen::MatrixX3d>& V, const Eigen::Ref<const Eigen::MatrixX3i>& F, double cell = 0);
 
   /// The vertices of V inside `box` (closed), in ascending order — those a scan of every
   /// vertex would find. @param V  #V×3, the positions the index was kept up to date with
-  std::vector<int> vertices_in(const Eigen::AlignedBox3d& box, const Eigen::MatrixX3d& V) const;
+  std::vector<int> vertices_in(const Eigen::AlignedBox3d& box, const Eigen::Ref<const Eigen::MatrixX3d>& V) const;
   /// The faces that use vertex v (in no particular order).
   const std::vector<int>& faces_of(int v) const { return vertex_faces_[v]; }
 
