@@ -4,6 +4,7 @@
 #include "sculpt/detail/sort_unique.h"
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 #include <set>
 #include <unordered_map>
@@ -68,6 +69,21 @@ struct Work {
 using Edge = std::pair<int, int>;
 Edge edge(int a, int b) { return {std::min(a, b), std::max(a, b)}; }
 
+/// The corner after corner i of a triangle.
+constexpr int kNext[3] = {1, 2, 0};
+
+/// A face's corners: where they are and whether they are in the box, looked up once.
+struct Corners {
+  Corners(const Work& work, const std::array<int, 3>& t)
+      : position{work.position(t[0]), work.position(t[1]), work.position(t[2])},
+        inside{work.in_box[t[0]] != 0, work.in_box[t[1]] != 0, work.in_box[t[2]] != 0} {}
+  /// The same value as `Work::squared_length` of the corners' vertices.
+  double squared_length(int i, int j) const { return (position[i] - position[j]).squaredNorm(); }
+
+  Eigen::Vector3d position[3];
+  bool inside[3];
+};
+
 /// One side of an edge (the edge and one of its faces): sorted by edge, the two faces of an edge
 /// of a closed manifold come next to each other.
 struct EdgeSide {
@@ -86,10 +102,11 @@ std::vector<EdgeSide> long_edge_sides(const Work& work, double max_edge) {
     const int f = work.candidates ? (*work.candidates)[k] : k;
     const auto& t = work.F[f];
     if (t[0] < 0) continue;
+    const Corners corners(work, t);
     for (int i = 0; i < 3; ++i) {
-      const Edge e = edge(t[i], t[(i + 1) % 3]);
-      if ((work.in_box[e.first] || work.in_box[e.second]) && work.squared_length(e.first, e.second) > max_squared)
-        sides.push_back({e, f});
+      const int j = kNext[i];
+      if ((corners.inside[i] || corners.inside[j]) && corners.squared_length(i, j) > max_squared)
+        sides.push_back({edge(t[i], t[j]), f});
     }
   }
   std::sort(sides.begin(), sides.end());
@@ -192,11 +209,12 @@ bool try_collapse(Work& work, VertexFaces& vertex_faces, int a, int b, double ma
 int collapse_pass(Work& work, double min_edge, double max_edge) {
   std::vector<std::pair<double, Edge>> short_edges;
   for (const auto& t : work.F) {
-    if (t[0] < 0) continue;
+    if (t[0] < 0 || work.in_box[t[0]] + work.in_box[t[1]] + work.in_box[t[2]] < 2) continue;
+    const Corners corners(work, t);
     for (int i = 0; i < 3; ++i) {
-      const int a = t[i], b = t[(i + 1) % 3];
-      if (a < b && work.in_box[a] && work.in_box[b] && work.squared_length(a, b) < min_edge * min_edge)
-        short_edges.push_back({work.length(a, b), {a, b}});
+      const int j = kNext[i], a = t[i], b = t[j];
+      if (a < b && corners.inside[i] && corners.inside[j] && corners.squared_length(i, j) < min_edge * min_edge)
+        short_edges.push_back({std::sqrt(corners.squared_length(i, j)), {a, b}});
     }
   }
   if (short_edges.empty()) return 0;
@@ -305,6 +323,7 @@ RemeshResult remesh(const Eigen::AlignedBox3d& box, const RemeshOptions& options
   std::vector<int> faces;
   if (index) {
     const std::vector<int> inside = index->vertices_in(box, V);
+    faces.reserve(2 * inside.size() + 64);  // a closed surface has about two faces per vertex
     for (int v : inside) work.in_box[v] = 1;
     for (int v : inside)  // each face once: from its first corner in the box
       for (int f : index->faces_of(v)) {
@@ -318,6 +337,8 @@ RemeshResult remesh(const Eigen::AlignedBox3d& box, const RemeshOptions& options
     for (int f = 0; f < mesh.face_count(); ++f)
       if (work.in_box[F(f, 0)] || work.in_box[F(f, 1)] || work.in_box[F(f, 2)]) faces.push_back(f);
   }
+  work.F.reserve(faces.size() + faces.size() / 8);
+  work.original_face.reserve(faces.size());
   for (int f : faces) {
     work.F.push_back({F(f, 0), F(f, 1), F(f, 2)});
     work.original_face.push_back(f);
