@@ -29,6 +29,10 @@ struct Work {
   /// The faces a split pass looks at: those the pass before split, or where it left long edges
   /// (the others were looked at and did not change); none yet: every face.
   std::optional<std::vector<int>> candidates = {};
+  /// The short edges the first split pass found (in `ShortEdges` order), if it was asked to
+  /// look: splits neither move vertices nor remove short edges, so after them the short edges
+  /// are these and those of the new vertices.
+  std::optional<std::vector<std::pair<double, std::pair<int, int>>>> first_short_edges = {};
   bool normals = false;
   /// The first position and normal of each vertex of the mesh's that was set (for the undo log).
   std::unordered_map<int, std::pair<Eigen::Vector3d, Eigen::Vector3d>> first_values = {};
@@ -94,9 +98,26 @@ struct EdgeSide {
 
 /// The sides of the edges longer than `max_edge` with an endpoint in the box, on the candidate
 /// faces. A long edge has both its faces there (the pass before split it or left it long).
-std::vector<EdgeSide> long_edge_sides(const Work& work, double max_edge) {
+/// Adds the short edges of face t, each from the face where it runs from its lower vertex to
+/// its higher one (so once), with both ends in the box and `keep(a, b)`, to `short_edges`.
+template <typename Keep>
+void add_short_edges(const std::array<int, 3>& t, const Corners& corners, double min_edge, Keep keep,
+                     std::vector<std::pair<double, Edge>>& short_edges) {
+  for (int i = 0; i < 3; ++i) {
+    const int j = kNext[i], a = t[i], b = t[j];
+    if (a < b && corners.inside[i] && corners.inside[j] && corners.squared_length(i, j) < min_edge * min_edge &&
+        keep(a, b))
+      short_edges.push_back({std::sqrt(corners.squared_length(i, j)), {a, b}});
+  }
+}
+
+/// @param min_edge  > 0 on the first pass (every face looked at): its short edges are kept in
+///   `work.first_short_edges` for the collapse pass
+std::vector<EdgeSide> long_edge_sides(Work& work, double max_edge, double min_edge) {
   std::vector<EdgeSide> sides;
   const double max_squared = max_edge * max_edge;
+  const bool collect = !work.candidates && min_edge > 0;
+  if (collect) work.first_short_edges.emplace();
   const int count = work.candidates ? static_cast<int>(work.candidates->size()) : static_cast<int>(work.F.size());
   for (int k = 0; k < count; ++k) {
     const int f = work.candidates ? (*work.candidates)[k] : k;
@@ -108,6 +129,7 @@ std::vector<EdgeSide> long_edge_sides(const Work& work, double max_edge) {
       if ((corners.inside[i] || corners.inside[j]) && corners.squared_length(i, j) > max_squared)
         sides.push_back({edge(t[i], t[j]), f});
     }
+    if (collect) add_short_edges(t, corners, min_edge, [](int, int) { return true; }, *work.first_short_edges);
   }
   std::sort(sides.begin(), sides.end());
   return sides;
@@ -129,8 +151,8 @@ struct LongEdge {
   int faces[2] = {0, 0};
 };
 
-int split_pass(Work& work, const Eigen::AlignedBox3d& box, double max_edge) {
-  const std::vector<EdgeSide> sides = long_edge_sides(work, max_edge);
+int split_pass(Work& work, const Eigen::AlignedBox3d& box, double max_edge, double min_edge) {
+  const std::vector<EdgeSide> sides = long_edge_sides(work, max_edge, min_edge);
   std::vector<LongEdge> long_edges;
   for (std::size_t i = 0; i + 1 < sides.size(); ++i) {
     const Edge e = sides[i].edge;
@@ -206,17 +228,26 @@ bool try_collapse(Work& work, VertexFaces& vertex_faces, int a, int b, double ma
   return true;
 }
 
-int collapse_pass(Work& work, double min_edge, double max_edge) {
+/// The edges shorter than `min_edge` with both ends in the box: those the first split pass
+/// found and those of the vertices splits added (once only), or else a scan of every face.
+std::vector<std::pair<double, Edge>> short_edges_now(Work& work, double min_edge) {
+  const bool known = work.first_short_edges.has_value();
   std::vector<std::pair<double, Edge>> short_edges;
+  if (known) short_edges = std::move(*work.first_short_edges);
+  work.first_short_edges.reset();
+  const int added = work.original_vertices;  // vertices from this number on are new
   for (const auto& t : work.F) {
+    if (known && t[0] < added && t[1] < added && t[2] < added) continue;
     if (t[0] < 0 || work.in_box[t[0]] + work.in_box[t[1]] + work.in_box[t[2]] < 2) continue;
     const Corners corners(work, t);
-    for (int i = 0; i < 3; ++i) {
-      const int j = kNext[i], a = t[i], b = t[j];
-      if (a < b && corners.inside[i] && corners.inside[j] && corners.squared_length(i, j) < min_edge * min_edge)
-        short_edges.push_back({std::sqrt(corners.squared_length(i, j)), {a, b}});
-    }
+    if (known) add_short_edges(t, corners, min_edge, [added](int a, int b) { return a >= added || b >= added; }, short_edges);
+    else add_short_edges(t, corners, min_edge, [](int, int) { return true; }, short_edges);
   }
+  return short_edges;
+}
+
+int collapse_pass(Work& work, double min_edge, double max_edge) {
+  std::vector<std::pair<double, Edge>> short_edges = short_edges_now(work, min_edge);
   if (short_edges.empty()) return 0;
   std::sort(short_edges.begin(), short_edges.end());
   VertexFaces vertex_faces;  // of the vertices in the box only
@@ -344,7 +375,7 @@ RemeshResult remesh(const Eigen::AlignedBox3d& box, const RemeshOptions& options
     work.original_face.push_back(f);
   }
   for (int pass = 0; pass < kMaxPasses; ++pass) {
-    const int splits = split_pass(work, box, options.max_edge);
+    const int splits = split_pass(work, box, options.max_edge, options.min_edge);
     result.splits += splits;
     if (splits == 0) break;
   }
