@@ -327,6 +327,8 @@ StrokeResult deform_and_remesh(const std::vector<MovingTool>& tools, const Strok
 }  // namespace
 
 StrokeResult sculpt_mesh(const std::vector<MovingTool>& tools, const StrokeOptions& options, SculptMesh& mesh) {
+  if (mesh.index().vertex_count() != mesh.vertex_count() || mesh.index().face_count() != mesh.face_count())
+    mesh.reindex();
   StrokeUndo undo(mesh.vertex_count(), mesh.face_count(), mesh.has_normals());
   StrokeResult result = options.remesh.max_edge > 0 ? deform_and_remesh(tools, options, mesh, undo)
                                                     : deform(tools, options, mesh.V(), mesh.N(), &mesh.index(), undo);

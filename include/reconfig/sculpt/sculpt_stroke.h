@@ -95,8 +95,9 @@ StrokeResult sculpt_mesh(const std::vector<MovingTool>& tools, const StrokeOptio
 StrokeResult sculpt_mesh(const std::vector<MovingTool>& tools, const StrokeOptions& options, geometry::Mesh& mesh,
                          Eigen::MatrixX3d& N, MeshIndex& index);
 
-/// The same on a `SculptMesh` kept from stroke to stroke (a drag): its index as above, and
-/// the rows remeshing appends go to the room it keeps, so a frame copies no whole matrix.
+/// The same on a `SculptMesh` kept from stroke to stroke (a drag): its index as above (rebuilt
+/// first if its counts differ from the mesh's), and the rows remeshing appends go to the room
+/// it keeps, so a frame copies no whole matrix.
 /// The results are those of the overloads above, bit for bit.
 StrokeResult sculpt_mesh(const std::vector<MovingTool>& tools, const StrokeOptions& options, SculptMesh& mesh);
 

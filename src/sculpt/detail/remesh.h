@@ -28,8 +28,9 @@ struct RemeshChanges {
   std::vector<int> removed_faces = {};           ///< faces collapses removed (still in the mesh)
 };
 
-/// `remesh_in_box`, without the final compaction. @param index  of the mesh, or null (a scan)
-/// @param mesh  its index is not used (nor updated): `index` is
+/// `remesh_in_box`, without the final compaction.
+/// @param mesh   changed in place; its own index is neither queried nor updated
+/// @param index  the one to query (the mesh's, or null: a scan)
 RemeshResult remesh(const Eigen::AlignedBox3d& box, const RemeshOptions& options, const MeshIndex* index,
                     SculptMesh& mesh, RemeshChanges& changes);
 
