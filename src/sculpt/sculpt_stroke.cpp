@@ -11,6 +11,7 @@
 #include "sculpt/detail/half_step.h"
 #include "sculpt/detail/remesh.h"
 #include "reconfig/geometry/self_intersections.h"
+#include "reconfig/sculpt/sculpt_mesh.h"
 
 namespace reconfig::sculpt {
 namespace {
@@ -106,12 +107,8 @@ std::string check_grid(const detail::HalfStep& forward, const detail::HalfStep& 
 /// mesh (collapses renumber it), the mesh as it was, rebuilt from the log, instead.
 class StrokeUndo {
  public:
-  StrokeUndo(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i* F, const Eigen::MatrixX3d& N)
-      : vertices_(static_cast<int>(V.rows())),
-        faces_(F ? static_cast<int>(F->rows()) : 0),
-        normals_(N.rows() == V.rows()),
-        vertex_seen_(vertices_, 0),
-        face_seen_(faces_, 0) {}
+  StrokeUndo(int vertices, int faces, bool normals)
+      : vertices_(vertices), faces_(faces), normals_(normals), vertex_seen_(vertices_, 0), face_seen_(faces_, 0) {}
 
   void record_vertex(int v, const Eigen::Vector3d& position, const Eigen::Vector3d& normal) {
     if (whole_ || v >= vertices_ || vertex_seen_[v]) return;
@@ -127,38 +124,44 @@ class StrokeUndo {
     face_corners_.push_back(corners);
   }
   /// Keeps the mesh as it was whole (before a compaction renumbers it); the log stops.
-  void keep_whole(const geometry::Mesh& mesh, const Eigen::MatrixX3d& N) {
+  void keep_whole(const SculptMesh& mesh) {
     if (whole_) return;
-    whole_ = std::make_unique<geometry::Mesh>(mesh);
-    whole_N_ = N;
-    Eigen::MatrixX3i& F = whole_->F;
-    put_back(whole_->V, &F, whole_N_);
+    whole_ = std::make_unique<geometry::Mesh>(mesh.mesh());
+    whole_N_ = mesh.normals();
+    Eigen::Ref<Eigen::MatrixX3i> F = whole_->F;
+    put_back_rows(whole_->V, whole_N_, &F);
+    whole_->V.conservativeResize(vertices_, 3);
+    whole_->F.conservativeResize(faces_, 3);
+    if (normals_) whole_N_.conservativeResize(vertices_, 3);
   }
-  void restore(Eigen::MatrixX3d& V, Eigen::MatrixX3i* F, Eigen::MatrixX3d& N) {
-    if (!whole_) return put_back(V, F, N);
-    V = std::move(whole_->V);
-    if (F) *F = std::move(whole_->F);
-    N = std::move(whole_N_);
+  /// Puts the points back (`deform_points`: no vertex was added).
+  void restore(Eigen::Ref<Eigen::MatrixX3d> V, Eigen::Ref<Eigen::MatrixX3d> N) const { put_back_rows(V, N, nullptr); }
+  void restore(SculptMesh& mesh) {
+    if (!whole_) return put_back(mesh);
+    mesh.assign(whole_->V, whole_->F, whole_N_);
   }
   /// The logged vertices that are somewhere else now.
-  int moved(const Eigen::MatrixX3d& V) const {
+  int moved(const Eigen::Ref<const Eigen::MatrixX3d>& V) const {
     int count = 0;
     for (std::size_t k = 0; k < rows_.size(); ++k) count += V.row(rows_[k]).transpose() != positions_[k];
     return count;
   }
 
  private:
-  void put_back(Eigen::MatrixX3d& V, Eigen::MatrixX3i* F, Eigen::MatrixX3d& N) const {
+  void put_back_rows(Eigen::Ref<Eigen::MatrixX3d> V, Eigen::Ref<Eigen::MatrixX3d> N,
+                     Eigen::Ref<Eigen::MatrixX3i>* F) const {
     for (std::size_t k = 0; k < rows_.size(); ++k) {
       V.row(rows_[k]) = positions_[k].transpose();
       if (normals_) N.row(rows_[k]) = normals_v_[k].transpose();
     }
-    if (V.rows() != vertices_) V.conservativeResize(vertices_, 3);
-    if (normals_ && N.rows() != vertices_) N.conservativeResize(vertices_, 3);
     if (!F) return;
     for (std::size_t k = 0; k < face_rows_.size(); ++k)
       F->row(face_rows_[k]) << face_corners_[k][0], face_corners_[k][1], face_corners_[k][2];
-    if (F->rows() != faces_) F->conservativeResize(faces_, 3);
+  }
+  void put_back(SculptMesh& mesh) const {
+    Eigen::Ref<Eigen::MatrixX3i> F = mesh.F();
+    put_back_rows(mesh.V(), mesh.N(), &F);
+    mesh.resize(vertices_, faces_);
   }
 
   int vertices_, faces_;
@@ -173,7 +176,8 @@ class StrokeUndo {
 };
 
 /// The points in `reach`, ascending: from the index, or by a scan of every point.
-std::vector<int> points_in(const Eigen::AlignedBox3d& reach, const Eigen::MatrixX3d& V, const MeshIndex* index) {
+std::vector<int> points_in(const Eigen::AlignedBox3d& reach, const Eigen::Ref<const Eigen::MatrixX3d>& V,
+                           const MeshIndex* index) {
   if (index) return index->vertices_in(reach, V);
   std::vector<int> in_reach;
   for (int i = 0; i < V.rows(); ++i)
@@ -184,8 +188,9 @@ std::vector<int> points_in(const Eigen::AlignedBox3d& reach, const Eigen::Matrix
 /// Applies sub-step k to the points in reach (the index, if any, kept up to date); the message
 /// of the first failure, or empty. Counts the points it moved in `moved`.
 std::string substep_points(const detail::HalfStep& forward, const detail::HalfStep& backward,
-                           const Eigen::AlignedBox3d& reach, Eigen::MatrixX3d& V, Eigen::MatrixX3d& N, double& least,
-                           MeshIndex* index, StrokeUndo& undo, int& moved) {
+                           const Eigen::AlignedBox3d& reach, Eigen::Ref<Eigen::MatrixX3d> V,
+                           Eigen::Ref<Eigen::MatrixX3d> N, double& least, MeshIndex* index, StrokeUndo& undo,
+                           int& moved) {
   const std::vector<int> in_reach = points_in(reach, V, index);
   const int n = static_cast<int>(in_reach.size());
   std::vector<SubstepPoint> out(n);
@@ -221,8 +226,8 @@ std::string substep_points(const detail::HalfStep& forward, const detail::HalfSt
 /// `deform_points`, the points found by `index` (null: a scan), every change logged in `undo`;
 /// a refused stroke is left half done (the caller puts it back). `vertices_moved` sums the
 /// points each sub-step moved.
-StrokeResult deform(const std::vector<MovingTool>& tools, const StrokeOptions& options, Eigen::MatrixX3d& V,
-                    Eigen::MatrixX3d& N, MeshIndex* index, StrokeUndo& undo) {
+StrokeResult deform(const std::vector<MovingTool>& tools, const StrokeOptions& options, Eigen::Ref<Eigen::MatrixX3d> V,
+                    Eigen::Ref<Eigen::MatrixX3d> N, MeshIndex* index, StrokeUndo& undo) {
   assert(!tools.empty());
   assert(N.rows() == 0 || N.rows() == V.rows());
   StrokeResult result;
@@ -254,9 +259,9 @@ StrokeResult deform(const std::vector<MovingTool>& tools, const StrokeOptions& o
 
 StrokeResult deform_points(const std::vector<MovingTool>& tools, const StrokeOptions& options, Eigen::MatrixX3d& V,
                            Eigen::MatrixX3d& N) {
-  StrokeUndo undo(V, nullptr, N);
+  StrokeUndo undo(static_cast<int>(V.rows()), 0, N.rows() == V.rows());
   StrokeResult result = deform(tools, options, V, N, nullptr, undo);
-  if (!result.applied) undo.restore(V, nullptr, N);
+  if (!result.applied) undo.restore(V, N);
   result.vertices_moved = undo.moved(V);
   return result;
 }
@@ -265,29 +270,31 @@ namespace {
 
 /// Logs what a remesh changed and keeps the index up to date with it; a compaction (after
 /// collapses) keeps the mesh as it was in the log and indexes the compacted mesh anew.
-void apply_remesh_changes(const detail::RemeshChanges& changes, geometry::Mesh& mesh, Eigen::MatrixX3d& N,
-                          MeshIndex& index, StrokeUndo& undo) {
-  const bool normals = N.rows() == mesh.V.rows();
+void apply_remesh_changes(const detail::RemeshChanges& changes, SculptMesh& mesh, StrokeUndo& undo) {
+  const bool normals = mesh.has_normals();
   for (std::size_t k = 0; k < changes.moved.size(); ++k)
     undo.record_vertex(changes.moved[k], changes.moved_from[k], normals ? changes.moved_normal_from[k] : Eigen::Vector3d());
   for (std::size_t k = 0; k < changes.faces.size(); ++k)
     if (changes.before[k][0] >= 0) undo.record_face(changes.faces[k], changes.before[k]);
   if (!changes.removed_faces.empty()) {
-    undo.keep_whole(mesh, N);
-    detail::compact(changes.removed_faces, mesh, N);
-    index = MeshIndex(mesh, index.cell());
+    undo.keep_whole(mesh);
+    detail::compact(changes.removed_faces, mesh);
+    mesh.reindex();
     return;
   }
-  for (int v = changes.old_vertices; v < mesh.vertex_count(); ++v) index.add_vertex(mesh.V.row(v).transpose());
+  MeshIndex& index = mesh.index();
+  const auto V = mesh.V();
+  const auto F = mesh.F();
+  for (int v = changes.old_vertices; v < mesh.vertex_count(); ++v) index.add_vertex(V.row(v).transpose());
   for (std::size_t k = 0; k < changes.faces.size(); ++k) {
     const int f = changes.faces[k];
-    index.change_face(f, changes.before[k], {mesh.F(f, 0), mesh.F(f, 1), mesh.F(f, 2)});
+    index.change_face(f, changes.before[k], {F(f, 0), F(f, 1), F(f, 2)});
   }
 }
 
 /// The stroke one sub-step at a time, the mesh remeshed in each sub-step's reach after it.
-StrokeResult deform_and_remesh(const std::vector<MovingTool>& tools, const StrokeOptions& options, geometry::Mesh& mesh,
-                               Eigen::MatrixX3d& N, MeshIndex& index, StrokeUndo& undo) {
+StrokeResult deform_and_remesh(const std::vector<MovingTool>& tools, const StrokeOptions& options, SculptMesh& mesh,
+                               StrokeUndo& undo) {
   StrokeResult result;
   result.substeps = count_substeps(tools, options, result.foldover_bound);
   StrokeOptions one = options;
@@ -295,7 +302,7 @@ StrokeResult deform_and_remesh(const std::vector<MovingTool>& tools, const Strok
   std::vector<MovingTool> step = tools;
   for (std::size_t j = 0; j < tools.size(); ++j) step[j].motion = tools[j].motion.fraction(1.0 / result.substeps);
   for (int k = 0; k < result.substeps; ++k) {
-    const StrokeResult sub = deform(step, one, mesh.V, N, &index, undo);
+    const StrokeResult sub = deform(step, one, mesh.V(), mesh.N(), &mesh.index(), undo);
     result.min_jacobian_determinant = std::min(result.min_jacobian_determinant, sub.min_jacobian_determinant);
     if (!sub.applied) {
       result.refusal = fmt::format("the stroke folds space over at sub-step {} of {}: {}", k + 1, result.substeps,
@@ -307,8 +314,8 @@ StrokeResult deform_and_remesh(const std::vector<MovingTool>& tools, const Strok
     for (std::size_t j = 0; j < step.size(); ++j) step[j].tool = sub.tools[j];
     reach.extend(place(step, options.mirror, 0.0).reach);
     detail::RemeshChanges changes;
-    const RemeshResult remeshed = detail::remesh(reach, options.remesh, &index, mesh, N, changes);
-    apply_remesh_changes(changes, mesh, N, index, undo);
+    const RemeshResult remeshed = detail::remesh(reach, options.remesh, &mesh.index(), mesh, changes);
+    apply_remesh_changes(changes, mesh, undo);
     result.splits += remeshed.splits;
     result.collapses += remeshed.collapses;
   }
@@ -319,38 +326,43 @@ StrokeResult deform_and_remesh(const std::vector<MovingTool>& tools, const Strok
 
 }  // namespace
 
-StrokeResult sculpt_mesh(const std::vector<MovingTool>& tools, const StrokeOptions& options, geometry::Mesh& mesh,
-                         Eigen::MatrixX3d& N, MeshIndex& index) {
-  if (index.vertex_count() != mesh.vertex_count() || index.face_count() != mesh.face_count())
-    index = MeshIndex(mesh, index.cell());
-  StrokeUndo undo(mesh.V, &mesh.F, N);
-  StrokeResult result = options.remesh.max_edge > 0 ? deform_and_remesh(tools, options, mesh, N, index, undo)
-                                                    : deform(tools, options, mesh.V, N, &index, undo);
-  if (options.remesh.max_edge <= 0) result.vertices_moved = undo.moved(mesh.V);
+StrokeResult sculpt_mesh(const std::vector<MovingTool>& tools, const StrokeOptions& options, SculptMesh& mesh) {
+  if (mesh.index().vertex_count() != mesh.vertex_count() || mesh.index().face_count() != mesh.face_count())
+    mesh.reindex();
+  StrokeUndo undo(mesh.vertex_count(), mesh.face_count(), mesh.has_normals());
+  StrokeResult result = options.remesh.max_edge > 0 ? deform_and_remesh(tools, options, mesh, undo)
+                                                    : deform(tools, options, mesh.V(), mesh.N(), &mesh.index(), undo);
+  if (options.remesh.max_edge <= 0) result.vertices_moved = undo.moved(mesh.V());
   const bool changed = result.vertices_moved > 0 || result.splits > 0 || result.collapses > 0;
   bool restored = false;
   if (result.applied && options.check_self_intersections && changed) {
-    const geometry::SelfIntersections after = geometry::find_self_intersections(mesh, 1);
+    const geometry::SelfIntersections after = geometry::find_self_intersections(mesh.mesh(), 1);
     if (!after.pairs.empty()) {  // refused unless the mesh self-intersected before the stroke
-      geometry::Mesh deformed = mesh;
-      Eigen::MatrixX3d deformed_N = N;
-      undo.restore(mesh.V, &mesh.F, N);
+      SculptMesh deformed = mesh;
+      undo.restore(mesh);
       restored = true;
-      if (!geometry::find_self_intersections(mesh, 0).truncated) {
+      if (!geometry::find_self_intersections(mesh.mesh(), 0).truncated) {
         result.applied = false;
         result.refusal = fmt::format("the stroke makes the mesh self-intersect (faces {} and {})", after.pairs[0].first,
                                      after.pairs[0].second);
       } else {
         mesh = std::move(deformed);
-        N = std::move(deformed_N);
         restored = false;
       }
     }
   }
   if (!result.applied) {
-    if (!restored) undo.restore(mesh.V, &mesh.F, N);
-    index = MeshIndex(mesh, index.cell());
+    if (!restored) undo.restore(mesh);
+    mesh.reindex();
   }
+  return result;
+}
+
+StrokeResult sculpt_mesh(const std::vector<MovingTool>& tools, const StrokeOptions& options, geometry::Mesh& mesh,
+                         Eigen::MatrixX3d& N, MeshIndex& index) {
+  SculptMesh sculpted = SculptMesh::adopt(std::move(mesh), std::move(N), std::move(index));
+  const StrokeResult result = sculpt_mesh(tools, options, sculpted);
+  sculpted.release(mesh, N, index);
   return result;
 }
 

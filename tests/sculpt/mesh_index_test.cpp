@@ -67,6 +67,23 @@ TEST(MeshIndex, FindsTheVerticesAScanFinds) {
   EXPECT_EQ(index.vertices_in(on_cells, mesh.V), scan(on_cells, mesh.V));
 }
 
+TEST(MeshIndex, FindsWhatAScanFindsOnFlatAndStretchedMeshes) {
+  // The grid spans the mesh's box: flat along an axis, stretched by one far vertex (most cells
+  // empty, the grid coarsened to bound its size), or a single point.
+  std::mt19937 random(19);
+  geometry::Mesh flat = geometry::make_sphere(1.0, 3);
+  flat.V.col(2).setZero();
+  geometry::Mesh stretched = geometry::make_sphere(1.0, 3);
+  stretched.V.row(0) << 400, -300, 250;
+  geometry::Mesh point = geometry::make_sphere(1.0, 0);
+  point.V.setConstant(0.5);
+  for (const geometry::Mesh* mesh : {&flat, &stretched, &point})
+    for (double cell : {0.0, 0.001, 0.2}) expect_same_as_scans(MeshIndex(*mesh, cell), *mesh, random, 1.5);
+  const MeshIndex far(stretched, 0.05);
+  const Eigen::AlignedBox3d around_far(Eigen::Vector3d(399, -301, 249), Eigen::Vector3d(401, -299, 251));
+  EXPECT_EQ(far.vertices_in(around_far, stretched.V), std::vector<int>{0});
+}
+
 TEST(MeshIndex, FollowsMovedAndAddedVertices) {
   std::mt19937 random(11);
   geometry::Mesh mesh = geometry::make_sphere(1.0, 2);

@@ -1,15 +1,14 @@
 #pragma once
 /// @file
 /// The spatial index a mesh keeps while it is sculpted (Sweepers §5.1: only what a tool's box
-/// holds is touched): its vertices bucketed in a uniform grid, and the faces around each
-/// vertex. Strokes (`sculpt_mesh`) keep it up to date as they move, add and remove vertices.
+/// holds is touched): its vertices bucketed in a dense uniform grid over the mesh's box (and
+/// a margin; vertices beyond it go to the border cells), and the faces around each vertex.
+/// Strokes (`sculpt_mesh`) keep it up to date as they move, add and remove vertices.
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
 #include <array>
-#include <cstdint>
-#include <unordered_map>
 #include <vector>
 
 #include "reconfig/geometry/mesh.h"
@@ -20,11 +19,13 @@ class MeshIndex {
  public:
   MeshIndex() = default;
   /// Indexes `mesh`. @param cell  the grid's cell edge (> 0), or 0: eight mean edge lengths
-  explicit MeshIndex(const geometry::Mesh& mesh, double cell = 0);
+  explicit MeshIndex(const geometry::Mesh& mesh, double cell = 0) : MeshIndex(mesh.V, mesh.F, cell) {}
+  /// Indexes the mesh of #V×3 positions V and #F×3 faces F (as the constructor above).
+  MeshIndex(const Eigen::Ref<const Eigen::MatrixX3d>& V, const Eigen::Ref<const Eigen::MatrixX3i>& F, double cell = 0);
 
   /// The vertices of V inside `box` (closed), in ascending order — those a scan of every
   /// vertex would find. @param V  #V×3, the positions the index was kept up to date with
-  std::vector<int> vertices_in(const Eigen::AlignedBox3d& box, const Eigen::MatrixX3d& V) const;
+  std::vector<int> vertices_in(const Eigen::AlignedBox3d& box, const Eigen::Ref<const Eigen::MatrixX3d>& V) const;
   /// The faces that use vertex v (in no particular order).
   const std::vector<int>& faces_of(int v) const { return vertex_faces_[v]; }
 
@@ -41,12 +42,15 @@ class MeshIndex {
   double cell() const { return cell_; }
 
  private:
-  static std::int64_t key(const std::array<int, 3>& cell);
+  /// The cell holding p (clamped to the grid), as its three coordinates.
   std::array<int, 3> cell_of(const Eigen::Vector3d& p) const;
+  int cell_number(const std::array<int, 3>& c) const { return (c[0] * dims_[1] + c[1]) * dims_[2] + c[2]; }
 
-  double cell_ = 1;
-  std::unordered_map<std::int64_t, std::vector<int>> cells_;  ///< vertices by grid cell
-  std::array<int, 3> low_{0, 0, 0}, high_{-1, -1, -1};          ///< cells ever occupied span these
+  double cell_ = 1;     ///< the cell edge asked for
+  double inverse_ = 1;  ///< 1 / the grid's cell edge (≥ `cell_`: the grid's size is bounded)
+  Eigen::Vector3d origin_ = Eigen::Vector3d::Zero();  ///< the grid's low corner
+  std::array<int, 3> dims_{1, 1, 1};                  ///< cells along each axis
+  std::vector<std::vector<int>> cells_ = std::vector<std::vector<int>>(1);  ///< vertices by cell
   std::vector<std::vector<int>> vertex_faces_;
   int faces_ = 0;
 };

@@ -11,6 +11,7 @@
 #include "reconfig/geometry/mesh.h"
 #include "reconfig/sculpt/mesh_index.h"
 #include "reconfig/sculpt/remesh_in_box.h"
+#include "reconfig/sculpt/sculpt_mesh.h"
 #include "reconfig/sculpt/substep_count.h"
 
 namespace reconfig::sculpt {
@@ -93,5 +94,11 @@ StrokeResult sculpt_mesh(const std::vector<MovingTool>& tools, const StrokeOptio
 /// @param index  of `mesh` (rebuilt first if its vertex or face count differs from the mesh's)
 StrokeResult sculpt_mesh(const std::vector<MovingTool>& tools, const StrokeOptions& options, geometry::Mesh& mesh,
                          Eigen::MatrixX3d& N, MeshIndex& index);
+
+/// The same on a `SculptMesh` kept from stroke to stroke (a drag): its index as above (rebuilt
+/// first if its counts differ from the mesh's), and the rows remeshing appends go to the room
+/// it keeps, so a frame copies no whole matrix.
+/// The results are those of the overloads above, bit for bit.
+StrokeResult sculpt_mesh(const std::vector<MovingTool>& tools, const StrokeOptions& options, SculptMesh& mesh);
 
 }  // namespace reconfig::sculpt

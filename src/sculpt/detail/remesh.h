@@ -13,6 +13,7 @@
 #include "reconfig/geometry/mesh.h"
 #include "reconfig/sculpt/mesh_index.h"
 #include "reconfig/sculpt/remesh_in_box.h"
+#include "reconfig/sculpt/sculpt_mesh.h"
 
 namespace reconfig::sculpt::detail {
 
@@ -27,11 +28,13 @@ struct RemeshChanges {
   std::vector<int> removed_faces = {};           ///< faces collapses removed (still in the mesh)
 };
 
-/// `remesh_in_box`, without the final compaction. @param index  of the mesh, or null (a scan)
+/// `remesh_in_box`, without the final compaction.
+/// @param mesh   changed in place; its own index is neither queried nor updated
+/// @param index  the one to query (the mesh's, or null: a scan)
 RemeshResult remesh(const Eigen::AlignedBox3d& box, const RemeshOptions& options, const MeshIndex* index,
-                    geometry::Mesh& mesh, Eigen::MatrixX3d& N, RemeshChanges& changes);
+                    SculptMesh& mesh, RemeshChanges& changes);
 
 /// Drops `removed_faces` and the vertices no face uses any more; the rest keep their order.
-void compact(const std::vector<int>& removed_faces, geometry::Mesh& mesh, Eigen::MatrixX3d& N);
+void compact(const std::vector<int>& removed_faces, SculptMesh& mesh);
 
 }  // namespace reconfig::sculpt::detail
