@@ -279,8 +279,7 @@ bool SculptPanel::start_stroke(Studio& studio, const view::Ray& ray, std::option
   const std::optional<ToolRings> tool_rings = ring ? rings(studio) : std::nullopt;
   if (!tool_rings && !hit_part(studio, ray) && !view::ray_mesh(ray, world_shape.V, world_shape.F)) return false;
   const scene::Part& part = studio.document()->scene().parts[studio.selected_part()];
-  Stroke stroke{.part = part.name, .mesh = part.mesh, .tool = *tool};
-  stroke.index = sculpt::MeshIndex(stroke.mesh);
+  Stroke stroke{.part = part.name, .sculpted = sculpt::SculptMesh(part.mesh, Eigen::MatrixX3d(0, 3)), .tool = *tool};
   stroke.tool_origin = origin;
   stroke.to_world = *to_world;
   stroke.plane_normal = studio.camera().forward();
@@ -300,7 +299,7 @@ bool SculptPanel::start_stroke(Studio& studio, const view::Ray& ray, std::option
 
 bool SculptPanel::move_tool(Studio& studio, const sculpt::ToolMotion& motion) {
   Stroke& s = *stroke_;
-  const sculpt::StrokeResult result = sculpt::sculpt_mesh({{s.tool, motion}}, stroke_options(settings_), s.mesh, s.normals, s.index);
+  const sculpt::StrokeResult result = sculpt::sculpt_mesh({{s.tool, motion}}, stroke_options(settings_), s.sculpted);
   if (!result.applied) {
     s.stopped = true;
     studio.set_status(fmt::format("sculpt: {} refused the move, the stroke stops at its last good state: {}", s.part,
@@ -352,7 +351,7 @@ void SculptPanel::show_live(Studio& studio) {
   Stroke& s = *stroke_;
   Document& document = *studio.document();
   if (s.live && document.version() == s.live_version) document.undo();
-  s.live = studio.execute(scene::replace_part_mesh(s.part, s.mesh));
+  s.live = studio.execute(scene::replace_part_mesh(s.part, s.sculpted.mesh()));
   s.live_version = document.version();
   if (s.stopped)  // the refusal stays in the status line
     studio.set_status(fmt::format("sculpt: {} refused a move; the stroke stopped at its last good state", s.part), true);

@@ -22,7 +22,7 @@
 
 #include "reconfig/geometry/mesh.h"
 #include "reconfig/render/draw_list.h"
-#include "reconfig/sculpt/mesh_index.h"
+#include "reconfig/sculpt/sculpt_mesh.h"
 #include "reconfig/sculpt/tool.h"
 #include "reconfig/sculpt/tool_motion.h"
 #include "reconfig/view/picking.h"
@@ -97,10 +97,9 @@ class SculptPanel {
  private:
   struct Stroke {
     std::string part = {};      ///< its name: indices may change under a structural undo
-    geometry::Mesh mesh = {};   ///< the part's mesh as the stroke has made it so far
+    /// The part's mesh as the stroke has made it so far (room to grow, and its index).
+    sculpt::SculptMesh sculpted = {};
     sculpt::Tool tool;          ///< in the part's rest frame, where the stroke has moved it
-    Eigen::MatrixX3d normals = Eigen::MatrixX3d(0, 3);
-    sculpt::MeshIndex index = {};
     Eigen::Vector3d tool_origin = Eigen::Vector3d::Zero();  ///< the tool's center in its own frame
     Eigen::Isometry3d to_world = Eigen::Isometry3d::Identity();  ///< the part's placement
     Eigen::Vector3d last_point = Eigen::Vector3d::Zero();  ///< the mouse on the drag plane (world)
