@@ -1,6 +1,7 @@
 #include "gizmo.h"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -63,25 +64,27 @@ GizmoHandle Gizmo::hit(const view::Camera& camera, int width, int height, const 
   double best_distance = tolerance;
   for (const GizmoHandle handle : {GizmoHandle::kMoveX, GizmoHandle::kMoveY, GizmoHandle::kMoveZ,
                                    GizmoHandle::kRotateX, GizmoHandle::kRotateY, GizmoHandle::kRotateZ}) {
-    const std::vector<Eigen::Vector3d> points = shape(handle, 48);
-    std::optional<Eigen::Vector2d> previous;
-    for (const Eigen::Vector3d& point : points) {
-      const auto projected = view::project_to_pixel(camera, width, height, point);
-      if (!projected) {
-        previous.reset();
-        continue;
-      }
-      if (previous) {
-        const double distance = distance_to_segment(mouse, *previous, projected->pixel);
-        if (distance < best_distance) {
-          best_distance = distance;
-          best = handle;
-        }
-      }
-      previous = projected->pixel;
+    const double distance = pixel_distance_to_polyline(camera, width, height, shape(handle, 48), mouse);
+    if (distance < best_distance) {
+      best_distance = distance;
+      best = handle;
     }
   }
   return best;
+}
+
+double pixel_distance_to_polyline(const view::Camera& camera, int width, int height,
+                                  const std::vector<Eigen::Vector3d>& points, const Eigen::Vector2d& mouse) {
+  double nearest = std::numeric_limits<double>::infinity();
+  Eigen::Vector2d previous = Eigen::Vector2d::Zero();
+  bool drawn_before = false;  // whether `previous` is the point before's pixel
+  for (const Eigen::Vector3d& point : points) {
+    const std::optional<view::Projection> projected = view::project_to_pixel(camera, width, height, point);
+    if (projected && drawn_before) nearest = std::min(nearest, distance_to_segment(mouse, previous, projected->pixel));
+    drawn_before = projected.has_value();
+    if (projected) previous = projected->pixel;
+  }
+  return nearest;
 }
 
 std::optional<double> closest_axis_parameter(const view::Ray& ray, const Eigen::Vector3d& center,

@@ -55,6 +55,11 @@ struct GizmoDrag {
   motion::Pose pose_for(const view::Ray& ray) const;
 };
 
+/// How far, in pixels, `mouse` is from the drawn polyline `points` (projected segment by
+/// segment; segments with an end behind the camera are skipped); infinity if none is drawn.
+double pixel_distance_to_polyline(const view::Camera& camera, int width, int height,
+                                  const std::vector<Eigen::Vector3d>& points, const Eigen::Vector2d& mouse);
+
 /// Parameter s of the point center + s·axis of the axis line closest to the ray, or nullopt
 /// when the two are (nearly) parallel.
 std::optional<double> closest_axis_parameter(const view::Ray& ray, const Eigen::Vector3d& center,

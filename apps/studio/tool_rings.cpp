@@ -9,17 +9,6 @@
 #include "reconfig/view/picking.h"
 
 namespace reconfig::studio {
-namespace {
-
-double distance_to_segment(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-  const Eigen::Vector2d ab = b - a;
-  const double length2 = ab.squaredNorm();
-  const double s = length2 > 0 ? std::clamp((p - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
-  return (a + s * ab - p).norm();
-}
-
-}  // namespace
-
 ToolRings ToolRings::around(const view::Camera& camera, int height, const Eigen::Vector3d& center,
                             const Eigen::Matrix3d& axes, double reach) {
   return {center, axes, std::max(Gizmo::sized_for(camera, height, center).ring_radius, 1.1 * reach)};
@@ -47,18 +36,10 @@ std::optional<int> ToolRings::hit(const view::Camera& camera, int width, int hei
   double best_distance = tolerance;
   for (int axis = 0; axis < 3; ++axis) {
     if (edge_on(camera, axis)) continue;
-    std::optional<Eigen::Vector2d> previous;
-    for (const Eigen::Vector3d& point : ring(axis)) {
-      const std::optional<view::Projection> projected = view::project_to_pixel(camera, width, height, point);
-      if (!projected) {
-        previous.reset();
-        continue;
-      }
-      if (previous && distance_to_segment(mouse, *previous, projected->pixel) < best_distance) {
-        best_distance = distance_to_segment(mouse, *previous, projected->pixel);
-        best = axis;
-      }
-      previous = projected->pixel;
+    const double distance = pixel_distance_to_polyline(camera, width, height, ring(axis), mouse);
+    if (distance < best_distance) {
+      best_distance = distance;
+      best = axis;
     }
   }
   return best;
