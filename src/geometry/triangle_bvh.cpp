@@ -6,8 +6,10 @@
 #include <algorithm>
 #include <array>
 #include <cassert>
+#include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <new>
 #include <utility>
 
 namespace reconfig::geometry {
@@ -112,9 +114,9 @@ void TriangleBvh::for_each_overlapping(const Eigen::AlignedBox3d& box, const std
   }
 }
 
-template <class OtherNodeBox, class OtherTriangleBox>
+template <class OtherNodeBox, class OtherLeafBoxes>
 void TriangleBvh::visit_overlapping_pairs(const TriangleBvh& other, const OtherNodeBox& other_node_box,
-                                          const OtherTriangleBox& other_triangle_box,
+                                          const OtherLeafBoxes& other_leaf_boxes,
                                           const std::function<void(int f, int g)>& visit) const {
   if (nodes_.front().begin == nodes_.front().end || other.nodes_.front().begin == other.nodes_.front().end) return;
   struct Item {
@@ -130,23 +132,17 @@ void TriangleBvh::visit_overlapping_pairs(const TriangleBvh& other, const OtherN
   if (!nodes_[0].box.intersects(root_box)) return;
   stack[top++] = {0, 0, root_box};
   static_assert(kPairLeafSize >= kLeafSize);
-  // The moved boxes of the last leaf of `other` met: the depth-first descent meets one leaf
-  // of `other` against many of this tree's in a row.
-  std::array<Eigen::AlignedBox3d, kPairLeafSize> other_boxes;
-  int other_boxes_leaf = -1;
   while (top > 0) {
     const Item item = stack[--top];
     const Node& a = nodes_[item.i];
     const Node& b = other.nodes_[item.j];
     const bool a_leaf = a.end - a.begin <= kPairLeafSize, b_leaf = b.end - b.begin <= kPairLeafSize;
     if (a_leaf && b_leaf) {
-      if (other_boxes_leaf != item.j) {
-        for (int k = b.begin; k < b.end; ++k) other_boxes[k - b.begin] = other_triangle_box(k);
-        other_boxes_leaf = item.j;
-      }
+      const Eigen::AlignedBox3d* other_boxes = nullptr;  // looked up once a triangle of a meets b's box
       for (int k = a.begin; k < a.end; ++k) {
         const Eigen::AlignedBox3d& fbox = ordered_boxes_[k];
         if (!fbox.intersects(item.b_box)) continue;
+        if (other_boxes == nullptr) other_boxes = other_leaf_boxes(b);
         for (int l = b.begin; l < b.end; ++l)
           if (fbox.intersects(other_boxes[l - b.begin])) visit(order_[k], other.order_[l]);
       }
@@ -171,7 +167,8 @@ void TriangleBvh::visit_overlapping_pairs(const TriangleBvh& other, const OtherN
 void TriangleBvh::for_each_overlapping_pair(const TriangleBvh& other,
                                             const std::function<void(int f, int g)>& visit) const {
   visit_overlapping_pairs(
-      other, [](const Node& node) { return node.box; }, [&](int k) { return other.ordered_boxes_[k]; }, visit);
+      other, [](const Node& node) { return node.box; },
+      [&](const Node& leaf) { return other.ordered_boxes_.data() + leaf.begin; }, visit);
 }
 
 void TriangleBvh::for_each_overlapping_pair(const TriangleBvh& other, const Eigen::Isometry3d& other_to_this,
@@ -205,18 +202,30 @@ void TriangleBvh::for_each_pair_within(const TriangleBvh& other, const Eigen::Is
     }
     return Eigen::AlignedBox3d(node_min[j], node_max[j]);
   };
-  const auto moved_triangle_box = [&](int k) {
-    const int g = other.order_[k];
-    Eigen::AlignedBox3d box(other_moved[other.F_(g, 0)]);
-    box.extend(other_moved[other.F_(g, 1)]);
-    box.extend(other_moved[other.F_(g, 2)]);
-    if (distance > 0) {
-      box.min().array() -= distance;
-      box.max().array() += distance;
+  // The boxes of a leaf's moved triangles, computed once, when the leaf is first met.
+  std::vector<std::uint8_t> leaf_known(node_count, 0);
+  // Raw storage, each box constructed when computed: an array of Eigen boxes would first set
+  // every one of them empty. (Their destructors do nothing, so none is called.)
+  std::unique_ptr<std::byte[]> box_storage(new std::byte[other.order_.size() * sizeof(Eigen::AlignedBox3d)]);
+  auto* const triangle_boxes = reinterpret_cast<Eigen::AlignedBox3d*>(box_storage.get());
+  const auto moved_leaf_boxes = [&](const Node& leaf) -> const Eigen::AlignedBox3d* {
+    Eigen::AlignedBox3d* boxes = triangle_boxes + leaf.begin;
+    const std::size_t j = &leaf - other.nodes_.data();
+    if (leaf_known[j]) return boxes;
+    for (int k = leaf.begin; k < leaf.end; ++k) {
+      const int g = other.order_[k];
+      Eigen::AlignedBox3d* box = new (boxes + (k - leaf.begin)) Eigen::AlignedBox3d(other_moved[other.F_(g, 0)]);
+      box->extend(other_moved[other.F_(g, 1)]);
+      box->extend(other_moved[other.F_(g, 2)]);
+      if (distance > 0) {
+        box->min().array() -= distance;
+        box->max().array() += distance;
+      }
     }
-    return box;
+    leaf_known[j] = 1;
+    return boxes;
   };
-  visit_overlapping_pairs(other, node_box, moved_triangle_box, visit);
+  visit_overlapping_pairs(other, node_box, moved_leaf_boxes, visit);
 }
 
 TriangleBvh::Nearest TriangleBvh::nearest(const Eigen::Vector3d& q, double max_distance) const {

@@ -60,12 +60,13 @@ class TriangleBvh {
     int left = -1, right = -1;  ///< children, or -1 for a leaf
     int begin = 0, end = 0;     ///< leaf: range in order_
   };
-  /// The pair traversal of both `for_each_overlapping_pair`s: `other_node_box(node)` and
-  /// `other_triangle_box(k)` give `other`'s boxes in this tree's frame (k: the position of the
-  /// triangle in `other.order_`).
-  template <class OtherNodeBox, class OtherTriangleBox>
+  /// The pair traversal of both `for_each_overlapping_pair`s: `other_node_box(node)` gives
+  /// the box of a node of `other` in this tree's frame, `other_leaf_boxes(node)` the boxes of
+  /// its triangles there (a pointer to node.end − node.begin boxes, in `other.order_`'s order,
+  /// valid until the traversal ends).
+  template <class OtherNodeBox, class OtherLeafBoxes>
   void visit_overlapping_pairs(const TriangleBvh& other, const OtherNodeBox& other_node_box,
-                               const OtherTriangleBox& other_triangle_box,
+                               const OtherLeafBoxes& other_leaf_boxes,
                                const std::function<void(int f, int g)>& visit) const;
 
   Eigen::MatrixX3d V_;
