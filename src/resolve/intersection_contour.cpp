@@ -5,8 +5,11 @@
 #include <cstdint>
 #include <limits>
 #include <map>
+#include <memory>
 #include <tuple>
+#include <vector>
 
+#include "reconfig/geometry/certain_plane.h"
 #include "reconfig/geometry/moved_vertices.h"
 #include "reconfig/geometry/triangle_intersection.h"
 
@@ -26,28 +29,28 @@ Triangle moved_triangle(const geometry::TriangleBvh& tree, int f, geometry::Move
   return {moved[F(f, 0)], moved[F(f, 1)], moved[F(f, 2)]};
 }
 
-/// Whether the corners of t lie certainly strictly on one side of the plane of triangle p, by
-/// a floating-point test whose error bound makes it certain: then the exact orientations say so
-/// too, and t cannot meet p. A cheap test that settles most of the pairs a tree query gives
-/// before the exact one. The computed n·(q − p0), n = (p1 − p0) × (p2 − p0), is within
-/// sqrt(c)·|q − p0| of the exact orientation determinant for c = 2 (32 ε)² (|n|² + |p1 − p0|²
-/// |p2 − p0|²): twice the bound the exact triangle test uses for its own crossings.
-bool certainly_beside(const Triangle& p, const Triangle& t) {
-  constexpr double bound = 32 * std::numeric_limits<double>::epsilon();
-  const Eigen::Vector3d& p0 = p[0];
-  const Eigen::Vector3d e1 = p[1] - p0, e2 = p[2] - p0, n = e1.cross(e2);
-  const double c = 2 * bound * bound * (n.squaredNorm() + e1.squaredNorm() * e2.squaredNorm());
-  int positive = 0, negative = 0;
-  for (const Eigen::Vector3d& q : t) {
-    const Eigen::Vector3d d = q - p0;
-    const double s = n.dot(d);
-    if (!(s * s > c * d.squaredNorm())) return false;  // too close to tell (or NaN)
-    (s > 0 ? positive : negative) += 1;
-  }
-  return positive == 3 || negative == 3;
-}
+/// The planes of a moved mesh's triangles (`certain_plane.h`), each computed once, when first
+/// asked for, from the moved corners: a tree query meets each triangle in several pairs.
+class MovedPlanes {
+ public:
+  MovedPlanes(const geometry::TriangleBvh& tree, geometry::MovedVertices& moved)
+      : tree_(tree), moved_(moved), planes_(new geometry::CertainPlane[tree.faces().rows()]), known_(tree.faces().rows(), 0) {}
 
-Eigen::Vector3d unit_normal(const Triangle& t) { return (t[1] - t[0]).cross(t[2] - t[0]).normalized(); }
+  const geometry::CertainPlane& operator[](int f) {
+    if (!known_[f]) {
+      const Eigen::MatrixX3i& F = tree_.faces();
+      planes_[f] = geometry::certain_plane(moved_[F(f, 0)], moved_[F(f, 1)], moved_[F(f, 2)]);
+      known_[f] = 1;
+    }
+    return planes_[f];
+  }
+
+ private:
+  const geometry::TriangleBvh& tree_;
+  geometry::MovedVertices& moved_;
+  std::unique_ptr<geometry::CertainPlane[]> planes_;
+  std::vector<std::uint8_t> known_;
+};
 
 double distance_to_segment(const Eigen::Vector3d& p, const Eigen::Vector3d& e0, const Eigen::Vector3d& e1) {
   const Eigen::Vector3d d = e1 - e0;
@@ -193,14 +196,16 @@ IntersectionContour intersection_contour(const PartShape& a, const Eigen::Isomet
   const PairContext ctx{a, b, place_a};
   IntersectionContour contour;
   geometry::MovedVertices b_moved(b.tree().vertices(), b_to_a);  // each of b's corners moved once
+  MovedPlanes b_planes(b.tree(), b_moved);
   a.tree().for_each_overlapping_pair(b.tree(), b_to_a, [&](int fa, int fb) {
     // The exact test below decides the same as these two filters where they are certain.
     const Triangle tb = moved_triangle(b.tree(), fb, b_moved);
+    if (geometry::certainly_beside(a.planes[fa], tb)) return;
     const Triangle ta = rest_triangle(a.tree(), fa);
-    if (certainly_beside(ta, tb) || certainly_beside(tb, ta)) return;
+    if (geometry::certainly_beside(b_planes[fb], ta)) return;
     const geometry::TriangleContact contact = geometry::intersect_triangles(ta[0], ta[1], ta[2], tb[0], tb[1], tb[2]);
     if (!contact.intersect || contact.coplanar || contact.points.size() != 2) return;
-    const CrossingPair crossing{fa, fb, ta, tb, unit_normal(ta), unit_normal(tb)};
+    const CrossingPair crossing{fa, fb, ta, tb, a.planes[fa].normal.normalized(), b_planes[fb].normal.normalized()};
     const double weight = edge_weight(ta, fa, a, Eigen::Isometry3d::Identity(), tb[0], crossing.nb) *
                           edge_weight(tb, fb, b, b_to_a, ta[0], crossing.na);
     if (weight == 0) return;

@@ -1,0 +1,36 @@
+#pragma once
+/// @file
+/// A triangle's plane prepared for a floating-point side test that is certain where it answers:
+/// the cheap filter in front of exact triangle–triangle tests.
+
+#include <Eigen/Core>
+
+#include <array>
+
+namespace reconfig::geometry {
+
+/// The plane through p0, p1, p2 as the side test computes it: s(q) = n·(q − p0) with
+/// n = (p1 − p0) × (p2 − p0), and the factor c of its error bound. The computed s(q) is within
+/// sqrt(c)·|q − p0| of the exact orientation determinant orient(p0, p1, p2, q), for
+/// c = 2 (32 ε)² (|n|² + |p1 − p0|² |p2 − p0|²) — twice the bound the exact triangle test
+/// (`triangle_intersection.h`) uses for its own crossings.
+struct CertainPlane {
+  Eigen::Vector3d origin;   ///< p0
+  Eigen::Vector3d normal;   ///< n, not normalized
+  double error_factor;      ///< c (no initializers: arrays of planes are filled lazily)
+};
+
+/// The plane of the triangle (p0, p1, p2); a degenerate triangle gives a plane whose tests
+/// never answer.
+CertainPlane certain_plane(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1, const Eigen::Vector3d& p2);
+
+/// Whether q lies certainly strictly on the positive (+1) or negative (−1) side of the plane:
+/// then the exact orientation has that sign. 0 when the test cannot tell (within its error
+/// bound, on the plane, or NaN).
+int certain_side(const CertainPlane& plane, const Eigen::Vector3d& q);
+
+/// Whether all three corners lie certainly strictly on one side of the plane: then the exact
+/// orientations say so too, and the triangle cannot meet the plane's triangle.
+bool certainly_beside(const CertainPlane& plane, const std::array<Eigen::Vector3d, 3>& triangle);
+
+}  // namespace reconfig::geometry

@@ -1,0 +1,85 @@
+#include "reconfig/geometry/certain_plane.h"
+
+#include <CGAL/Gmpq.h>
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+
+#include <array>
+#include <cmath>
+#include <random>
+
+namespace reconfig::geometry {
+namespace {
+
+using Q = CGAL::Gmpq;
+
+/// The exact sign of orient(p0, p1, p2, q) = ((p1 − p0) × (p2 − p0)) · (q − p0), in rationals.
+int exact_side(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1, const Eigen::Vector3d& p2,
+               const Eigen::Vector3d& q) {
+  const auto diff = [](const Eigen::Vector3d& x, const Eigen::Vector3d& y) {
+    return std::array<Q, 3>{Q(x.x()) - Q(y.x()), Q(x.y()) - Q(y.y()), Q(x.z()) - Q(y.z())};
+  };
+  const std::array<Q, 3> e1 = diff(p1, p0), e2 = diff(p2, p0), d = diff(q, p0);
+  const Q n0 = e1[1] * e2[2] - e1[2] * e2[1], n1 = e1[2] * e2[0] - e1[0] * e2[2], n2 = e1[0] * e2[1] - e1[1] * e2[0];
+  const Q s = n0 * d[0] + n1 * d[1] + n2 * d[2];
+  return s > 0 ? 1 : (s < 0 ? -1 : 0);
+}
+
+struct Case {
+  std::array<Eigen::Vector3d, 3> plane;
+  Eigen::Vector3d q;
+};
+
+/// A random triangle (sometimes a sliver or far from the origin) and a point on its plane
+/// moved off it by a random, often tiny, amount: the cases where rounding decides.
+Case random_case(std::mt19937& rng) {
+  std::uniform_real_distribution<double> unit(-1, 1);
+  std::uniform_int_distribution<int> exponent(-60, 0);
+  const auto point = [&] { return Eigen::Vector3d(unit(rng), unit(rng), unit(rng)); };
+  const double scale = std::ldexp(1.0, exponent(rng) / 6), shift = rng() % 3 == 0 ? 1e3 : 0.0;
+  Case c;
+  c.plane = {scale * point(), scale * point(), scale * point()};
+  if (rng() % 4 == 0) c.plane[2] = c.plane[0] + std::ldexp(1.0, exponent(rng)) * (c.plane[1] - c.plane[0]) + 1e-9 * scale * point();
+  for (Eigen::Vector3d& p : c.plane) p.array() += shift;
+  const double u = unit(rng), v = unit(rng);
+  const Eigen::Vector3d on = c.plane[0] + u * (c.plane[1] - c.plane[0]) + v * (c.plane[2] - c.plane[0]);
+  const Eigen::Vector3d n = (c.plane[1] - c.plane[0]).cross(c.plane[2] - c.plane[0]);
+  const double off = rng() % 5 == 0 ? 0.0 : std::ldexp(unit(rng), exponent(rng));
+  c.q = on + off * (n.norm() > 0 ? Eigen::Vector3d(n.normalized()) : point());
+  return c;
+}
+
+TEST(CertainPlane, NeverContradictsTheExactOrientation) {
+  std::mt19937 rng(7);
+  int decided = 0, undecided = 0;
+  for (int i = 0; i < 200000; ++i) {
+    const Case c = random_case(rng);
+    const int side = certain_side(certain_plane(c.plane[0], c.plane[1], c.plane[2]), c.q);
+    if (side == 0) {
+      ++undecided;
+      continue;
+    }
+    ++decided;
+    ASSERT_EQ(side, exact_side(c.plane[0], c.plane[1], c.plane[2], c.q)) << "case " << i;
+  }
+  // The filter must decide most cases (else it filters nothing) and leave some to the exact test.
+  EXPECT_GT(decided, 100000);
+  EXPECT_GT(undecided, 1000);
+}
+
+TEST(CertainPlane, ClearCasesAreDecidedAndTouchingOnesAreNot) {
+  const Eigen::Vector3d p0(0, 0, 0), p1(1, 0, 0), p2(0, 1, 0);
+  const CertainPlane plane = certain_plane(p0, p1, p2);
+  EXPECT_EQ(certain_side(plane, {0.2, 0.2, 1e-3}), 1);
+  EXPECT_EQ(certain_side(plane, {0.2, 0.2, -1e-3}), -1);
+  EXPECT_EQ(certain_side(plane, {5, -3, 0}), 0);                     // on the plane
+  EXPECT_EQ(certain_side(plane, {0.2, 0.2, std::nan("")}), 0);       // NaN
+  EXPECT_EQ(certain_side(certain_plane(p0, p1, 2 * p1), {0, 0, 1}), 0);  // a degenerate triangle
+  EXPECT_TRUE(certainly_beside(plane, {Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(1, 1, 2), Eigen::Vector3d(-1, 0, 0.5)}));
+  EXPECT_FALSE(certainly_beside(plane, {Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(1, 1, -2), Eigen::Vector3d(-1, 0, 0.5)}));
+  EXPECT_FALSE(certainly_beside(plane, {Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(1, 1, 0), Eigen::Vector3d(-1, 0, 0.5)}));
+}
+
+}  // namespace
+}  // namespace reconfig::geometry
