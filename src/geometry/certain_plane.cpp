@@ -23,9 +23,8 @@ int certain_side(const CertainPlane& plane, const Eigen::Vector3d& q) {
   return s > 0 ? 1 : -1;
 }
 
-bool certainly_beside(const CertainPlane& plane, const std::array<Eigen::Vector3d, 3>& triangle) {
-  const int side = certain_side(plane, triangle[0]);
-  return side != 0 && certain_side(plane, triangle[1]) == side && certain_side(plane, triangle[2]) == side;
+KnownSides certain_sides(const CertainPlane& plane, const std::array<Eigen::Vector3d, 3>& triangle) {
+  return {certain_side(plane, triangle[0]), certain_side(plane, triangle[1]), certain_side(plane, triangle[2])};
 }
 
 }  // namespace reconfig::geometry

@@ -190,14 +190,18 @@ void TriangleBvh::for_each_pair_within(const TriangleBvh& other, const Eigen::Is
   std::unique_ptr<Eigen::Vector3d[]> node_min(new Eigen::Vector3d[node_count]), node_max(new Eigen::Vector3d[node_count]);
   const auto node_box = [&](const Node& node) {
     const std::size_t j = &node - other.nodes_.data();
-    const Eigen::AlignedBox3d& box = node.box;
-    if (box.isEmpty()) return box;
     if (!node_known[j]) {
-      const Eigen::Vector3d c = other_to_this * box.center();
-      const Eigen::Vector3d h = R_abs * (0.5 * box.sizes());
-      const double pad = 1e-12 * (c.cwiseAbs().maxCoeff() + h.maxCoeff()) + distance;
-      node_min[j] = c - h - Eigen::Vector3d::Constant(pad);
-      node_max[j] = c + h + Eigen::Vector3d::Constant(pad);
+      const Eigen::AlignedBox3d& box = node.box;
+      if (box.isEmpty()) {
+        node_min[j] = box.min();
+        node_max[j] = box.max();
+      } else {
+        const Eigen::Vector3d c = other_to_this * box.center();
+        const Eigen::Vector3d h = R_abs * (0.5 * box.sizes());
+        const double pad = 1e-12 * (c.cwiseAbs().maxCoeff() + h.maxCoeff()) + distance;
+        node_min[j] = c - h - Eigen::Vector3d::Constant(pad);
+        node_max[j] = c + h + Eigen::Vector3d::Constant(pad);
+      }
       node_known[j] = 1;
     }
     return Eigen::AlignedBox3d(node_min[j], node_max[j]);

@@ -145,12 +145,13 @@ void plane_crossings(const Vec3* t, const int* side, const Vec3* p, const Vec3& 
 }
 
 /// The exact sides (−1, 0, +1) of t's corners with respect to the plane through p's corners
-/// (all 0 when p is degenerate).
-std::array<int, 3> sides_of(const Vec3* t, const Vec3* p) {
+/// (all 0 when p is degenerate); those `known` already (nonzero) are taken from it.
+std::array<int, 3> sides_of(const Vec3* t, const Vec3* p, const KnownSides& known = {0, 0, 0}) {
   const Point p0 = point(p[0]), p1 = point(p[1]), p2 = point(p[2]);
-  return {static_cast<int>(CGAL::orientation(p0, p1, p2, point(t[0]))),
-          static_cast<int>(CGAL::orientation(p0, p1, p2, point(t[1]))),
-          static_cast<int>(CGAL::orientation(p0, p1, p2, point(t[2])))};
+  std::array<int, 3> side = known;
+  for (int i = 0; i < 3; ++i)
+    if (side[i] == 0) side[i] = static_cast<int>(CGAL::orientation(p0, p1, p2, point(t[i])));
+  return side;
 }
 
 bool strictly_one_side(const std::array<int, 3>& side) {
@@ -214,6 +215,13 @@ bool triangles_intersect(const Eigen::Vector3d& a0, const Eigen::Vector3d& a1, c
 TriangleContact intersect_triangles(const Eigen::Vector3d& a0, const Eigen::Vector3d& a1,
                                     const Eigen::Vector3d& a2, const Eigen::Vector3d& b0,
                                     const Eigen::Vector3d& b1, const Eigen::Vector3d& b2) {
+  return intersect_triangles(a0, a1, a2, b0, b1, b2, {0, 0, 0}, {0, 0, 0});
+}
+
+TriangleContact intersect_triangles(const Eigen::Vector3d& a0, const Eigen::Vector3d& a1,
+                                    const Eigen::Vector3d& a2, const Eigen::Vector3d& b0,
+                                    const Eigen::Vector3d& b1, const Eigen::Vector3d& b2, const KnownSides& known_a,
+                                    const KnownSides& known_b) {
   using namespace detail;
   const Vec3 a[3] = {a0, a1, a2};
   const Vec3 b[3] = {b0, b1, b2};
@@ -222,7 +230,7 @@ TriangleContact intersect_triangles(const Eigen::Vector3d& a0, const Eigen::Vect
   // The common cases first, from the six exact sides: one triangle wholly beside the other's
   // plane (then neither is degenerate, and they are not coplanar), or both crossing the other's
   // plane in general position.
-  const std::array<int, 3> side_a = sides_of(a, b), side_b = sides_of(b, a);
+  const std::array<int, 3> side_a = sides_of(a, b, known_a), side_b = sides_of(b, a, known_b);
   if (strictly_one_side(side_a) || strictly_one_side(side_b)) return contact;
   const auto nonzero = [](const std::array<int, 3>& side) { return side[0] != 0 && side[1] != 0 && side[2] != 0; };
   if (nonzero(side_a) && nonzero(side_b) && transversal_contact(a, b, side_a, side_b, contact) != Transversal::kUndecided)

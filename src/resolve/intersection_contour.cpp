@@ -198,12 +198,16 @@ IntersectionContour intersection_contour(const PartShape& a, const Eigen::Isomet
   geometry::MovedVertices b_moved(b.tree().vertices(), b_to_a);  // each of b's corners moved once
   MovedPlanes b_planes(b.tree(), b_moved);
   a.tree().for_each_overlapping_pair(b.tree(), b_to_a, [&](int fa, int fb) {
-    // The exact test below decides the same as these two filters where they are certain.
+    // The exact test below decides the same as these two filters where they are certain, and
+    // takes the sides they are certain of.
     const Triangle tb = moved_triangle(b.tree(), fb, b_moved);
-    if (geometry::certainly_beside(a.planes[fa], tb)) return;
+    const geometry::KnownSides side_b = geometry::certain_sides(a.planes[fa], tb);
+    if (geometry::all_on_one_side(side_b)) return;
     const Triangle ta = rest_triangle(a.tree(), fa);
-    if (geometry::certainly_beside(b_planes[fb], ta)) return;
-    const geometry::TriangleContact contact = geometry::intersect_triangles(ta[0], ta[1], ta[2], tb[0], tb[1], tb[2]);
+    const geometry::KnownSides side_a = geometry::certain_sides(b_planes[fb], ta);
+    if (geometry::all_on_one_side(side_a)) return;
+    const geometry::TriangleContact contact =
+        geometry::intersect_triangles(ta[0], ta[1], ta[2], tb[0], tb[1], tb[2], side_a, side_b);
     if (!contact.intersect || contact.coplanar || contact.points.size() != 2) return;
     const CrossingPair crossing{fa, fb, ta, tb, a.planes[fa].normal.normalized(), b_planes[fb].normal.normalized()};
     const double weight = edge_weight(ta, fa, a, Eigen::Isometry3d::Identity(), tb[0], crossing.nb) *

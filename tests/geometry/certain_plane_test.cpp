@@ -76,9 +76,46 @@ TEST(CertainPlane, ClearCasesAreDecidedAndTouchingOnesAreNot) {
   EXPECT_EQ(certain_side(plane, {5, -3, 0}), 0);                     // on the plane
   EXPECT_EQ(certain_side(plane, {0.2, 0.2, std::nan("")}), 0);       // NaN
   EXPECT_EQ(certain_side(certain_plane(p0, p1, 2 * p1), {0, 0, 1}), 0);  // a degenerate triangle
-  EXPECT_TRUE(certainly_beside(plane, {Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(1, 1, 2), Eigen::Vector3d(-1, 0, 0.5)}));
-  EXPECT_FALSE(certainly_beside(plane, {Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(1, 1, -2), Eigen::Vector3d(-1, 0, 0.5)}));
-  EXPECT_FALSE(certainly_beside(plane, {Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(1, 1, 0), Eigen::Vector3d(-1, 0, 0.5)}));
+  const auto sides = [&](const Eigen::Vector3d& q0, const Eigen::Vector3d& q1, const Eigen::Vector3d& q2) {
+    return certain_sides(plane, {q0, q1, q2});
+  };
+  EXPECT_EQ(sides({0, 0, 1}, {1, 1, 2}, {-1, 0, 0.5}), (KnownSides{1, 1, 1}));
+  EXPECT_TRUE(all_on_one_side(sides({0, 0, 1}, {1, 1, 2}, {-1, 0, 0.5})));
+  EXPECT_EQ(sides({0, 0, 1}, {1, 1, -2}, {-1, 0, 0.5}), (KnownSides{1, -1, 1}));
+  EXPECT_FALSE(all_on_one_side(sides({0, 0, 1}, {1, 1, -2}, {-1, 0, 0.5})));
+  EXPECT_EQ(sides({0, 0, 1}, {1, 1, 0}, {-1, 0, 0.5}), (KnownSides{1, 0, 1}));
+  EXPECT_FALSE(all_on_one_side(sides({0, 0, 1}, {1, 1, 0}, {-1, 0, 0.5})));
+}
+
+/// A random triangle: on a small integer grid half the time (touching, coplanar, shared and
+/// degenerate corners are common there), else of random doubles in a unit box.
+std::array<Eigen::Vector3d, 3> random_triangle(std::mt19937& rng) {
+  std::uniform_int_distribution<int> grid(-2, 2);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  const bool on_grid = rng() % 2 == 0;
+  std::array<Eigen::Vector3d, 3> t;
+  for (Eigen::Vector3d& p : t)
+    p = on_grid ? Eigen::Vector3d(grid(rng), grid(rng), grid(rng)) : Eigen::Vector3d(unit(rng), unit(rng), unit(rng));
+  return t;
+}
+
+TEST(CertainPlane, KnownSidesGiveTheContactTheExactTestGives) {
+  std::mt19937 rng(11);
+  int crossing = 0, with_known = 0;
+  for (int i = 0; i < 100000; ++i) {
+    const std::array<Eigen::Vector3d, 3> a = random_triangle(rng), b = random_triangle(rng);
+    const KnownSides side_a = certain_sides(certain_plane(b[0], b[1], b[2]), a);
+    const KnownSides side_b = certain_sides(certain_plane(a[0], a[1], a[2]), b);
+    with_known += side_a != KnownSides{0, 0, 0} || side_b != KnownSides{0, 0, 0};
+    const TriangleContact expected = intersect_triangles(a[0], a[1], a[2], b[0], b[1], b[2]);
+    const TriangleContact got = intersect_triangles(a[0], a[1], a[2], b[0], b[1], b[2], side_a, side_b);
+    crossing += expected.intersect && !expected.coplanar && expected.points.size() == 2;
+    ASSERT_EQ(got.intersect, expected.intersect) << "case " << i;
+    ASSERT_EQ(got.coplanar, expected.coplanar) << "case " << i;
+    ASSERT_EQ(got.points, expected.points) << "case " << i;
+  }
+  EXPECT_GT(crossing, 5000);     // the contour's case is well represented
+  EXPECT_GT(with_known, 50000);  // and most pairs come with sides known
 }
 
 }  // namespace

@@ -7,6 +7,8 @@
 
 #include <array>
 
+#include "reconfig/geometry/triangle_intersection.h"
+
 namespace reconfig::geometry {
 
 /// The plane through p0, p1, p2 as the side test computes it: s(q) = n·(q − p0) with
@@ -29,8 +31,12 @@ CertainPlane certain_plane(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1,
 /// bound, on the plane, or NaN).
 int certain_side(const CertainPlane& plane, const Eigen::Vector3d& q);
 
-/// Whether all three corners lie certainly strictly on one side of the plane: then the exact
-/// orientations say so too, and the triangle cannot meet the plane's triangle.
-bool certainly_beside(const CertainPlane& plane, const std::array<Eigen::Vector3d, 3>& triangle);
+/// The certain sides of a triangle's corners (`certain_side` of each): what
+/// `intersect_triangles` can take as known sides.
+KnownSides certain_sides(const CertainPlane& plane, const std::array<Eigen::Vector3d, 3>& triangle);
+
+/// Whether the sides put all three corners strictly on one side: then the triangle cannot
+/// meet the plane's triangle.
+inline bool all_on_one_side(const KnownSides& side) { return side[0] != 0 && side[0] == side[1] && side[1] == side[2]; }
 
 }  // namespace reconfig::geometry

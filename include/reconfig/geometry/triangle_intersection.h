@@ -3,6 +3,7 @@
 /// Exact static triangle–triangle intersection.
 
 #include <Eigen/Core>
+#include <array>
 #include <vector>
 
 namespace reconfig::geometry {
@@ -33,5 +34,19 @@ bool triangles_intersect(const Eigen::Vector3d& a0, const Eigen::Vector3d& a1, c
 TriangleContact intersect_triangles(const Eigen::Vector3d& a0, const Eigen::Vector3d& a1,
                                     const Eigen::Vector3d& a2, const Eigen::Vector3d& b0,
                                     const Eigen::Vector3d& b1, const Eigen::Vector3d& b2);
+
+/// The exact sides (−1, +1) of a triangle's corners with respect to another's plane, as far as
+/// a caller has already decided them; 0: not decided. The side of corner q with respect to the
+/// plane of (p0, p1, p2) is the sign of ((p1 − p0) × (p2 − p0)) · (q − p0), evaluated exactly.
+using KnownSides = std::array<int, 3>;
+
+/// `intersect_triangles` for a caller that knows some of the corners' exact sides already (a
+/// filter such as `certain_plane.h`): `side_a` those of a's corners with respect to b's plane,
+/// `side_b` those of b's with respect to a's. The sides left 0 are decided here; the answer is
+/// the one `intersect_triangles` gives. A side given wrongly gives an undefined answer.
+TriangleContact intersect_triangles(const Eigen::Vector3d& a0, const Eigen::Vector3d& a1,
+                                    const Eigen::Vector3d& a2, const Eigen::Vector3d& b0,
+                                    const Eigen::Vector3d& b1, const Eigen::Vector3d& b2, const KnownSides& side_a,
+                                    const KnownSides& side_b);
 
 }  // namespace reconfig::geometry
