@@ -221,10 +221,16 @@ IntersectionContour intersection_contour(const PartShape& a, const Eigen::Isomet
     contour.segments.push_back(segment);
   });
   // The tree visits pairs in an order that depends on the traversal only: sort for a stable
-  // answer regardless of which part's tree is walked first.
-  std::sort(contour.segments.begin(), contour.segments.end(), [](const ContourSegment& x, const ContourSegment& y) {
-    return std::tie(x.triangle_a, x.triangle_b) < std::tie(y.triangle_a, y.triangle_b);
-  });
+  // answer regardless of which part's tree is walked first (by key, then moved once each:
+  // segments are large).
+  std::vector<std::pair<std::pair<int, int>, int>> order(contour.segments.size());
+  for (std::size_t s = 0; s < order.size(); ++s)
+    order[s] = {{contour.segments[s].triangle_a, contour.segments[s].triangle_b}, static_cast<int>(s)};
+  std::sort(order.begin(), order.end());
+  std::vector<ContourSegment> sorted;
+  sorted.reserve(order.size());
+  for (const auto& [pair, s] : order) sorted.push_back(contour.segments[s]);
+  contour.segments = std::move(sorted);
   for (const ContourSegment& s : contour.segments) contour.length += s.weight * s.length();
   if (polylines == ContourPolylines::kChained) contour.polylines = chain(contour.segments);
   return contour;
