@@ -13,10 +13,10 @@ compare() {  # name, then the arguments after the binary; @OUT@ stands for a fil
   local name=$1
   shift
   local old_args=("${@//@OUT@/$out/$name.old.json}") new_args=("${@//@OUT@/$out/$name.new.json}")
-  # Wall times are the one thing that may differ.
-  "$old" "${old_args[@]}" 2>&1 | sed '/"seconds":/d' >"$out/$name.old"
+  # Wall times and the output's own name are all that may differ.
+  "$old" "${old_args[@]}" 2>&1 | sed -e '/"seconds":/d' -e "s|$out/$name.old.json|@OUT@|" >"$out/$name.old"
   local old_status=${PIPESTATUS[0]}
-  "$new" "${new_args[@]}" 2>&1 | sed '/"seconds":/d' >"$out/$name.new"
+  "$new" "${new_args[@]}" 2>&1 | sed -e '/"seconds":/d' -e "s|$out/$name.new.json|@OUT@|" >"$out/$name.new"
   local new_status=${PIPESTATUS[0]}
   runs=$((runs + 1))
   if [[ $old_status != "$new_status" ]] || ! cmp -s "$out/$name.old" "$out/$name.new" ||

@@ -45,7 +45,7 @@ bool closer_than(const TriangleBvh& a, const TriangleBvh& b, double clearance, E
     reach.max().array() += clearance;
     b.for_each_overlapping(reach, [&](int g) {
       const TriangleCorners tb{corner(b, g, 0), corner(b, g, 1), corner(b, g, 2)};
-      if (triangle_distance(ta, tb) >= clearance) return;
+      if (geometry::triangle_distance(ta, tb) >= clearance) return;
       closer = true;
       box.extend(own);
       for (const Eigen::Vector3d& p : tb) box.extend(p);

@@ -5,73 +5,12 @@
 #include <cmath>
 #include <limits>
 
-#include "reconfig/geometry/closest_point_on_triangle.h"
-#include "reconfig/geometry/triangle_intersection.h"
+#include "reconfig/geometry/triangle_closest_points.h"
 
 namespace reconfig::collision {
 namespace {
 
 using Eigen::Vector3d;
-
-/// The nearest points of two triangles, and their distance.
-struct NearestPair {
-  double distance = std::numeric_limits<double>::infinity();
-  Vector3d on_a = Vector3d::Zero(), on_b = Vector3d::Zero();
-};
-
-/// The nearest points of segments [p0, p1] and [q0, q1] (Ericson, Real-Time Collision
-/// Detection §5.1.9, degenerate segments included).
-NearestPair nearest_on_segments(const Vector3d& p0, const Vector3d& p1, const Vector3d& q0, const Vector3d& q1) {
-  const Vector3d d1 = p1 - p0, d2 = q1 - q0, r = p0 - q0;
-  const double a = d1.squaredNorm(), e = d2.squaredNorm(), f = d2.dot(r);
-  double s = 0, t = 0;
-  if (a <= 0 && e <= 0) {
-    s = t = 0;
-  } else if (a <= 0) {
-    t = std::clamp(f / e, 0.0, 1.0);
-  } else {
-    const double c = d1.dot(r);
-    if (e <= 0) {
-      s = std::clamp(-c / a, 0.0, 1.0);
-    } else {
-      const double b = d1.dot(d2), denominator = a * e - b * b;
-      s = denominator > 0 ? std::clamp((b * f - c * e) / denominator, 0.0, 1.0) : 0.0;
-      t = (b * s + f) / e;
-      if (t < 0) {
-        t = 0;
-        s = std::clamp(-c / a, 0.0, 1.0);
-      } else if (t > 1) {
-        t = 1;
-        s = std::clamp((b - c) / a, 0.0, 1.0);
-      }
-    }
-  }
-  NearestPair pair;
-  pair.on_a = p0 + s * d1;
-  pair.on_b = q0 + t * d2;
-  pair.distance = (pair.on_a - pair.on_b).norm();
-  return pair;
-}
-
-NearestPair nearest_pair(const TriangleCorners& a, const TriangleCorners& b) {
-  NearestPair best;
-  if (geometry::triangles_intersect(a[0], a[1], a[2], b[0], b[1], b[2])) {
-    best.distance = 0;
-    return best;
-  }
-  const auto keep = [&](const NearestPair& candidate) {
-    if (candidate.distance < best.distance) best = candidate;
-  };
-  for (int k = 0; k < 3; ++k) {
-    const Vector3d on_b = geometry::closest_point_on_triangle(a[k], b[0], b[1], b[2]).point;
-    keep({(a[k] - on_b).norm(), a[k], on_b});
-    const Vector3d on_a = geometry::closest_point_on_triangle(b[k], a[0], a[1], a[2]).point;
-    keep({(b[k] - on_a).norm(), on_a, b[k]});
-  }
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) keep(nearest_on_segments(a[i], a[(i + 1) % 3], b[j], b[(j + 1) % 3]));
-  return best;
-}
 
 TriangleCorners corners_at(const TriangleCorners& start, const TriangleCorners& end, double s) {
   return {start[0] + s * (end[0] - start[0]), start[1] + s * (end[1] - start[1]), start[2] + s * (end[2] - start[2])};
@@ -100,7 +39,7 @@ class ClearanceSearch {
     if (r_.relevant && !r_.relevant(lo, hi)) return;
     const double mid = (lo + hi) / 2, half = (hi - lo) / 2;
     const TriangleCorners a = corners_at(r_.a_start, r_.a_end, mid), b = corners_at(r_.b_start, r_.b_end, mid);
-    const NearestPair near = nearest_pair(a, b);
+    const geometry::TriangleClosestPoints near = geometry::triangle_closest_points(a, b);
     const double drift = lipschitz_ * half;
     if (near.distance + drift < r_.clearance - r_.rounding) return add_piece(lo, hi);  // closer throughout
     if (near.distance - drift >= r_.clearance + r_.rounding || apart_throughout(a, b, near, lo, hi)) return;
@@ -116,7 +55,7 @@ class ClearanceSearch {
 
   /// Whether some direction — from a's nearest point to b's, or either normal — keeps the
   /// triangles at least C apart at both ends of [lo, hi] (then throughout: the gap is concave).
-  bool apart_throughout(const TriangleCorners& a, const TriangleCorners& b, const NearestPair& near, double lo,
+  bool apart_throughout(const TriangleCorners& a, const TriangleCorners& b, const geometry::TriangleClosestPoints& near, double lo,
                         double hi) const {
     const TriangleCorners a_lo = corners_at(r_.a_start, r_.a_end, lo), a_hi = corners_at(r_.a_start, r_.a_end, hi);
     const TriangleCorners b_lo = corners_at(r_.b_start, r_.b_end, lo), b_hi = corners_at(r_.b_start, r_.b_end, hi);
@@ -138,8 +77,6 @@ class ClearanceSearch {
 };
 
 }  // namespace
-
-double triangle_distance(const TriangleCorners& a, const TriangleCorners& b) { return nearest_pair(a, b).distance; }
 
 TriangleClearanceResult triangles_closer_than(const TriangleClearanceRequest& request) {
   ClearanceSearch search(request);

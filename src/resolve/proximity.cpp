@@ -1,11 +1,11 @@
 #include "reconfig/resolve/proximity.h"
 
-#include "resolve/detail/triangle_closest_points.h"
+#include "reconfig/geometry/triangle_closest_points.h"
 
 namespace reconfig::resolve {
 namespace {
 
-detail::TriangleCorners corners(const geometry::TriangleBvh& tree, int f, const Eigen::Isometry3d& place) {
+geometry::TriangleCorners corners(const geometry::TriangleBvh& tree, int f, const Eigen::Isometry3d& place) {
   const Eigen::MatrixX3d& V = tree.vertices();
   const Eigen::MatrixX3i& F = tree.faces();
   return {place * Eigen::Vector3d(V.row(F(f, 0))), place * Eigen::Vector3d(V.row(F(f, 1))),
@@ -19,11 +19,11 @@ Proximity proximity(const PartShape& a, const Eigen::Isometry3d& place_a, const 
   const Eigen::Isometry3d b_to_a = place_a.inverse() * place_b;
   Proximity result;
   result.distance = reach;
-  detail::TriangleClosestPoints nearest;
+  geometry::TriangleClosestPoints nearest;
   nearest.distance = reach;
   a.tree().for_each_pair_within(b.tree(), b_to_a, reach, [&](int fa, int fb) {
     if (nearest.distance == 0) return;
-    const detail::TriangleClosestPoints pair = detail::triangle_closest_points(
+    const geometry::TriangleClosestPoints pair = geometry::triangle_closest_points(
         corners(a.tree(), fa, Eigen::Isometry3d::Identity()), corners(b.tree(), fb, b_to_a));
     if (pair.distance < nearest.distance) nearest = pair;
   });

@@ -58,7 +58,7 @@ TEST(TriangleClearance, DistanceMatchesDenseSampling) {
     const TriangleCorners b = random_triangle(random, Vector3d(offset(random), offset(random), offset(random)), 1);
     const int n = 40;
     const double sampled = sampled_distance(a, b, n);
-    const double exact = triangle_distance(a, b);
+    const double exact = geometry::triangle_distance(a, b);
     // The grid's points lie within (longest edge) / n of any point of their triangle.
     EXPECT_LE(exact, sampled + 1e-12) << "round " << round;
     EXPECT_GE(exact, sampled - (longest_edge(a) + longest_edge(b)) / n - 1e-12) << "round " << round;
@@ -66,9 +66,9 @@ TEST(TriangleClearance, DistanceMatchesDenseSampling) {
   // Parallel faces 0.25 apart, and crossing triangles.
   const TriangleCorners floor{Vector3d(0, 0, 0), Vector3d(1, 0, 0), Vector3d(0, 1, 0)};
   const TriangleCorners above{Vector3d(0.1, 0.1, 0.25), Vector3d(0.5, 0.1, 0.25), Vector3d(0.1, 0.5, 0.25)};
-  EXPECT_NEAR(triangle_distance(floor, above), 0.25, 1e-15);
+  EXPECT_NEAR(geometry::triangle_distance(floor, above), 0.25, 1e-15);
   const TriangleCorners across{Vector3d(0.2, 0.2, -1), Vector3d(0.3, 0.2, 1), Vector3d(0.2, 0.3, 1)};
-  EXPECT_EQ(triangle_distance(floor, across), 0.0);
+  EXPECT_EQ(geometry::triangle_distance(floor, across), 0.0);
 }
 
 TEST(TriangleClearance, MovingTrianglesMissNoTimeCloserThanTheClearance) {
@@ -94,7 +94,7 @@ TEST(TriangleClearance, MovingTrianglesMissNoTimeCloserThanTheClearance) {
     bool any_closer = false;
     for (int k = 0; k <= 2000; ++k) {
       const double s = k / 2000.0;
-      const double d = triangle_distance(at(request.a_start, request.a_end, s), at(request.b_start, request.b_end, s));
+      const double d = geometry::triangle_distance(at(request.a_start, request.a_end, s), at(request.b_start, request.b_end, s));
       if (d < request.clearance) {
         any_closer = true;
         EXPECT_TRUE(reported(s)) << "round " << round << " s " << s << " distance " << d;
@@ -105,7 +105,7 @@ TEST(TriangleClearance, MovingTrianglesMissNoTimeCloserThanTheClearance) {
       if (piece.hi - piece.lo > request.time_tolerance)
         for (int k = 0; k <= 20; ++k) {
           const double s = piece.lo + (piece.hi - piece.lo) * k / 20;
-          EXPECT_LT(triangle_distance(at(request.a_start, request.a_end, s), at(request.b_start, request.b_end, s)),
+          EXPECT_LT(geometry::triangle_distance(at(request.a_start, request.a_end, s), at(request.b_start, request.b_end, s)),
                     request.clearance)
               << "round " << round;
         }

@@ -2,8 +2,8 @@
 /// @file
 /// Clearance of two triangles of two parts: the distance between them, and the times of a
 /// proxy step at which two linearly moving triangles come closer than a clearance C — the
-/// narrow phase of the clearance check (`DetectorOptions::clearance`), shared in its static
-/// form with the reference check.
+/// narrow phase of the clearance check (`DetectorOptions::clearance`); its static form, the
+/// distance of two triangles, is `geometry/triangle_closest_points.h`.
 ///
 /// Over a piece [lo, hi] of the step the distance d(s) changes at most L·|s − s'| between two
 /// times, where L is the sum of the largest vertex displacements of the two triangles over the
@@ -19,12 +19,9 @@
 
 #include "reconfig/collision/triangle_pair_ccd.h"
 #include "reconfig/collision/triangle_touching.h"
+#include "reconfig/geometry/triangle_closest_points.h"
 
 namespace reconfig::collision {
-
-/// The distance between the closed triangles a and b (0 where they intersect), in floating
-/// point: the least of the 6 vertex–triangle and 9 edge–edge distances.
-double triangle_distance(const TriangleCorners& a, const TriangleCorners& b);
 
 /// Two triangles over one proxy step (step parameter 0 at its start, 1 at its end).
 struct TriangleClearanceRequest {

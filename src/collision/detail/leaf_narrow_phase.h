@@ -101,7 +101,7 @@ class LeafNarrowPhase {
     const MovingTriangle a = inputs_.triangle_at(pair_, 0, triangle_a_, step_.s0);
     const MovingTriangle b = inputs_.triangle_at(pair_, 1, triangle_b_, step_.s0);
     if (inputs_.options.closer_than > 0) {
-      if (triangle_distance(a, b) < closer_than() + inputs_.pad) add_contacts_of_piece(a, a, b, b, 0, 1, false);
+      if (geometry::triangle_distance(a, b) < closer_than() + inputs_.pad) add_contacts_of_piece(a, a, b, b, 0, 1, false);
       return;
     }
     if (geometry::triangles_intersect(a[0], a[1], a[2], b[0], b[1], b[2]) &&

@@ -1,4 +1,4 @@
-#include "resolve/detail/triangle_closest_points.h"
+#include "reconfig/geometry/triangle_closest_points.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,7 @@
 #include "reconfig/geometry/closest_point_on_triangle.h"
 #include "reconfig/geometry/triangle_intersection.h"
 
-namespace reconfig::resolve::detail {
+namespace reconfig::geometry {
 namespace {
 
 /// The nearest points of segments [p1, q1] and [p2, q2] (Ericson, Real-Time Collision
@@ -42,33 +42,41 @@ std::pair<Eigen::Vector3d, Eigen::Vector3d> segment_closest_points(const Eigen::
   return {p1 + s * d1, p2 + t * d2};
 }
 
-}  // namespace
-
-TriangleClosestPoints triangle_closest_points(const TriangleCorners& a, const TriangleCorners& b) {
+/// The least of the 6 vertex–triangle and 9 edge–edge feature pairs' nearest points, with the
+/// squared distance in `distance`.
+TriangleClosestPoints nearest_features(const TriangleCorners& a, const TriangleCorners& b) {
   TriangleClosestPoints best;
-  double best_d2 = std::numeric_limits<double>::infinity();
+  best.distance = std::numeric_limits<double>::infinity();
   const auto consider = [&](const Eigen::Vector3d& on_a, const Eigen::Vector3d& on_b) {
     const double d2 = (on_a - on_b).squaredNorm();
-    if (d2 < best_d2) {
-      best_d2 = d2;
-      best.on_a = on_a;
-      best.on_b = on_b;
-    }
+    if (d2 < best.distance) best = {d2, on_a, on_b};
   };
-  for (const Eigen::Vector3d& p : a) consider(p, geometry::closest_point_on_triangle(p, b[0], b[1], b[2]).point);
-  for (const Eigen::Vector3d& q : b) consider(geometry::closest_point_on_triangle(q, a[0], a[1], a[2]).point, q);
+  for (const Eigen::Vector3d& p : a) consider(p, closest_point_on_triangle(p, b[0], b[1], b[2]).point);
+  for (const Eigen::Vector3d& q : b) consider(closest_point_on_triangle(q, a[0], a[1], a[2]).point, q);
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) {
       const auto [on_a, on_b] = segment_closest_points(a[i], a[(i + 1) % 3], b[j], b[(j + 1) % 3]);
       consider(on_a, on_b);
     }
-  if (geometry::triangles_intersect(a[0], a[1], a[2], b[0], b[1], b[2])) {
+  return best;
+}
+
+}  // namespace
+
+TriangleClosestPoints triangle_closest_points(const TriangleCorners& a, const TriangleCorners& b) {
+  TriangleClosestPoints best = nearest_features(a, b);
+  if (triangles_intersect(a[0], a[1], a[2], b[0], b[1], b[2])) {
     best.distance = 0;
     best.on_b = best.on_a;
   } else {
-    best.distance = std::sqrt(best_d2);
+    best.distance = std::sqrt(best.distance);
   }
   return best;
 }
 
-}  // namespace reconfig::resolve::detail
+double triangle_distance(const TriangleCorners& a, const TriangleCorners& b) {
+  if (triangles_intersect(a[0], a[1], a[2], b[0], b[1], b[2])) return 0;
+  return std::sqrt(nearest_features(a, b).distance);
+}
+
+}  // namespace reconfig::geometry
