@@ -34,8 +34,8 @@ struct HintRequest {
   /// contributes its energy over the interval's time extent; intervals without `part` add none.
   std::vector<collision::CollisionInterval> intervals = {};
   DofSelection dofs = {};
-  /// Each interval's extent is widened by this much on both sides (clipped to [0, 1]) so
-  /// that the energy's samples cover frames the interval's ends were rounded to.
+  /// Each interval's extent is widened by this much on both sides (clipped to [0, 1]): see
+  /// `interval_energy`.
   double time_margin = 0.01;
 };
 
