@@ -8,7 +8,6 @@
 #include <cmath>
 
 #include "reconfig/geometry/bounding_box.h"
-#include "reconfig/geometry/mesh_check.h"
 #include "reconfig/geometry/primitives.h"
 #include "reconfig/scene/edits.h"
 #include "reconfig/sculpt/sculpt_stroke.h"
@@ -116,16 +115,14 @@ std::optional<sculpt::Tool> SculptPanel::make_tool(const Studio& studio, geometr
     return std::nullopt;
   }
   const Eigen::Isometry3d to_rest = to_world->inverse() * pose->to_isometry(tool_part.center);
-  geometry::Mesh baked = mapped(tool_part.mesh, [&](const Eigen::Vector3d& p) { return Eigen::Vector3d(to_rest * p); });
-  if (!geometry::check_mesh(baked).is_closed()) {
+  const BakedToolCache::Baked* baked = baked_tool_.bake(tool_part.mesh, to_rest, s.coating);
+  if (!baked) {
     problem = tool_part.name + " is not closed: it cannot be baked as a tool";
     return std::nullopt;
   }
-  const Eigen::Vector3d box_center = geometry::bounding_box(baked.V).center();
-  if (origin) *origin = box_center;
-  sculpt::Tool tool = turned(sculpt::Tool::baked(baked, s.coating), s.rotation, box_center);
-  if (shape) *shape = std::move(baked);
-  return tool;
+  if (origin) *origin = baked->center;
+  if (shape) *shape = baked->mesh;
+  return turned(baked->tool, s.rotation, baked->center);
 }
 
 std::optional<Eigen::Vector3d> SculptPanel::tool_center(const Studio& studio) const {

@@ -26,6 +26,7 @@
 #include "reconfig/sculpt/tool.h"
 #include "reconfig/sculpt/tool_motion.h"
 #include "reconfig/view/picking.h"
+#include "baked_tool_cache.h"
 #include "tool_rings.h"
 
 namespace reconfig::studio {
@@ -143,6 +144,8 @@ class SculptPanel {
   void draw_rotation_fields();
 
   Settings settings_;
+  /// The tool part baked last (`make_tool` is asked for the tool several times a frame).
+  mutable BakedToolCache baked_tool_;
   bool mode_ = false;
   bool placing_ = false;  ///< a right-drag is placing the tool
   std::optional<Stroke> stroke_;
