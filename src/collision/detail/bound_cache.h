@@ -2,8 +2,8 @@
 /// @file
 /// The bound cache: the spacetime k-DOPs of the tree nodes one thread met last, so that the two
 /// children of a split work item, which share the node that was not split, bound it once. One
-/// cache per thread serves every search (`thread_bound_cache`): its 350 KB are not built again
-/// for each of a detection's searches (one per interval end re-detected as well).
+/// cache per thread serves every search (`thread_bound_cache`): it is not built again for each
+/// of a detection's searches (one per interval end re-detected as well).
 
 #include <array>
 #include <atomic>
@@ -57,7 +57,10 @@ class BoundCache {
     Key key;
     Bound bound;
   };
-  static constexpr int kSlotBits = 8;
+  /// 1024 slots per side (1.4 MB per thread with the 28-DOP): against 256, a fifth fewer
+  /// bounds computed on the elephants and on the bunny sweep (3 % and 5 % fewer instructions in
+  /// all).
+  static constexpr int kSlotBits = 10;
   static std::size_t slot_of(const Key& k) {
     std::uint64_t h = static_cast<std::uint32_t>(k.node) * 0x9E3779B97F4A7C15ull;
     h ^= (static_cast<std::uint64_t>(k.s0) << 32 | static_cast<std::uint32_t>(k.s1)) * 0xC2B2AE3D27D4EB4Full;
