@@ -131,7 +131,8 @@ class TimelineSearch {
       const auto expand_items = [&](std::size_t begin, std::size_t end) {
         auto& next = next_parts.local();
         const ItemContext context{step_groups(), found_parts.local(), stat_parts.local()};
-        for (std::size_t i = begin; i < end; ++i) expand_work_item(inputs_, level[i], next, context, bound_caches_.local());
+        const BoundLookup<family> bounds{thread_bound_cache<family>(), search_id_};
+        for (std::size_t i = begin; i < end; ++i) expand_work_item(inputs_, level[i], next, context, bounds);
       };
       // Items of these first levels span many steps (a bound over every sample of their range
       // each): worth a task of a few.
@@ -233,7 +234,7 @@ class TimelineSearch {
   void search_step(std::size_t g, UrgencyQueue<WorkItem>& queue) {
     std::vector<LineContact>& local = step_contacts_[g];
     const ItemContext context{step_groups(), local, step_stats_[g]};
-    BoundCache<family>& bounds = bound_caches_.local();
+    const BoundLookup<family> bounds{thread_bound_cache<family>(), search_id_};
     std::vector<WorkItem> children;
     const auto expand = [&](const WorkItem& item) {
       const std::size_t known = local.size();
@@ -298,7 +299,7 @@ class TimelineSearch {
   std::vector<TriangleContact>& contacts_;
   DetectionStats& stats_;
   const DetectCallbacks& callbacks_;
-  tbb::enumerable_thread_specific<BoundCache<family>> bound_caches_;
+  const std::uint64_t search_id_ = new_search_id();  ///< its bounds in the threads' caches
   double expected_levels_ = 1;  ///< for progress: tree depths plus the halvings of the steps
   int depth_ = 0;               ///< breadth-first levels done
 

@@ -31,7 +31,7 @@ double spatial_extent(const Kdop<family>& dop) {
 ///         looked at), else 0
 template <DopFamily family>
 double expand_work_item(const TraversalInputs<family>& inputs, const WorkItem& item, std::vector<WorkItem>& children,
-                        const ItemContext& context, BoundCache<family>& bounds) {
+                        const ItemContext& context, const BoundLookup<family>& bounds) {
   DetectionStats& stats = context.stats;
   const PairTimeline& line = inputs.lines[item.pair];
   const BodyTree::Node& na = inputs.tree(item.pair, 0).node(item.node_a);
