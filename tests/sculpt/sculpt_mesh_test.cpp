@@ -40,7 +40,9 @@ TEST(SculptMesh, ResizesAndAssignmentsKeepTheRowsAPlainMatrixKeeps) {
       ASSERT_TRUE(mesh.V() == V) << step;
       ASSERT_TRUE(mesh.F() == F) << step;
       ASSERT_EQ(mesh.N().rows(), normals ? vertices : 0);
-      if (normals) ASSERT_TRUE(mesh.N() == N) << step;
+      if (normals) {
+        ASSERT_TRUE(mesh.N() == N) << step;
+      }
       ASSERT_TRUE(mesh.mesh().V == V && mesh.mesh().F == F);
     }
   }
