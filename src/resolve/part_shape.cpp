@@ -52,10 +52,13 @@ PartShape::PartShape(const geometry::Mesh& mesh, int max_samples) : distance(mes
     sample_weights.push_back(weight);
   }
   neighbors = face_neighbors(mesh);
-  planes.reserve(mesh.face_count());
-  for (int f = 0; f < mesh.face_count(); ++f)
-    planes.push_back(geometry::certain_plane(mesh.V.row(mesh.F(f, 0)).transpose(), mesh.V.row(mesh.F(f, 1)).transpose(),
-                                             mesh.V.row(mesh.F(f, 2)).transpose()));
+  // From the tree's own copy of the corners: the very doubles the contour's exact tests get.
+  const Eigen::MatrixX3d& V = tree().vertices();
+  const Eigen::MatrixX3i& F = tree().faces();
+  planes.reserve(F.rows());
+  for (int f = 0; f < F.rows(); ++f)
+    planes.push_back(
+        geometry::certain_plane(V.row(F(f, 0)).transpose(), V.row(F(f, 1)).transpose(), V.row(F(f, 2)).transpose()));
   closed = std::all_of(neighbors.begin(), neighbors.end(),
                        [](const std::array<int, 3>& across) { return across[0] >= 0 && across[1] >= 0 && across[2] >= 0; });
   const double total = std::accumulate(sample_weights.begin(), sample_weights.end(), 0.0);
