@@ -34,13 +34,16 @@ for scene in "${scenes[@]}"; do
       for side in old new; do
         binary=$old
         [[ $side == new ]] && binary=$new
-        # Exit 1 means collisions were found: only 2 (bad input) and worse are failures.
+        # Exit 1 means collisions were found: only 2 (bad input) and worse are failures, and so
+        # is no output (a crash may print nothing).
         status=0
-        "$binary" check --json --threads "$threads" "${flags[@]}" "$scene" | grep -v '"seconds":' >"$out/$side/$file" || status=$?
-        if [[ $status -ge 2 ]]; then
+        "$binary" check --json --threads "$threads" "${flags[@]}" "$scene" >"$out/$side/$file.raw" || status=$?
+        if [[ $status -ge 2 || ! -s $out/$side/$file.raw ]]; then
           echo "FAILED ($side, exit $status): $file" >&2
           exit 2
         fi
+        grep -v '"seconds":' "$out/$side/$file.raw" >"$out/$side/$file"
+        rm "$out/$side/$file.raw"
       done
       runs=$((runs + 1))
       if ! cmp -s "$out/old/$file" "$out/new/$file"; then

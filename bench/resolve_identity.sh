@@ -1,27 +1,47 @@
 #!/usr/bin/env bash
-# Compares what two reconfig binaries answer about collision energies, hints and automatic
+# Whether two builds of the CLI answer the same about collision energies, hints and automatic
 # resolution on every example: `check --energy --json`, `resolve --hint` for a part of each
-# colliding transition, and `resolve --auto`. Use it to show that a change to the resolve
-# module's speed left its answers bit for bit as they were.
-#   bench/resolve_identity.sh OLD_RECONFIG NEW_RECONFIG OUT_DIR
+# colliding transition, and `resolve --auto` (its output and the design it writes) must match
+# byte for byte but for wall times and the written file's own name. For changes to the resolve
+# module's speed that must not change any answer.
+#
+#   bench/resolve_identity.sh OLD_RECONFIG NEW_RECONFIG OUTDIR
+#
+# Prints one line per difference; exit 0 if none, 1 if any differ, 2 if a run failed.
 set -uo pipefail
-old=$1 new=$2 out=$3
-mkdir -p "$out"
+if [[ $# -ne 3 ]]; then
+  echo "usage: $0 OLD_RECONFIG NEW_RECONFIG OUTDIR" >&2
+  exit 2
+fi
+old=$(realpath "$1") new=$(realpath "$2")
+mkdir -p "$3"
+out=$(realpath "$3")
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 differ=0 runs=0
-compare() {  # name, then the arguments after the binary; @OUT@ stands for a file each writes
+# name, then the arguments after the binary; @OUT@ stands for a file each side writes. Exit 1
+# (collisions remain) is an answer; 2 and worse, or no output, are failures.
+compare() {
   local name=$1
   shift
-  local old_args=("${@//@OUT@/$out/$name.old.json}") new_args=("${@//@OUT@/$out/$name.new.json}")
-  # Wall times and the output's own name are all that may differ.
-  "$old" "${old_args[@]}" 2>&1 | sed -e '/"seconds":/d' -e "s|$out/$name.old.json|@OUT@|" >"$out/$name.old"
-  local old_status=${PIPESTATUS[0]}
-  "$new" "${new_args[@]}" 2>&1 | sed -e '/"seconds":/d' -e "s|$out/$name.new.json|@OUT@|" >"$out/$name.new"
-  local new_status=${PIPESTATUS[0]}
+  local side status
+  for side in old new; do
+    local binary=$old
+    [[ $side == new ]] && binary=$new
+    rm -f "$out/$name.$side" "$out/$name.$side.json"
+    status=0
+    "$binary" "${@//@OUT@/$out/$name.$side.json}" >"$out/$name.$side.raw" || status=$?
+    if [[ $status -ge 2 || ! -s $out/$name.$side.raw ]]; then
+      echo "FAILED ($side, exit $status): $name" >&2
+      exit 2
+    fi
+    sed -e '/"seconds":/d' -e "s|$out/$name.$side.json|@OUT@|" "$out/$name.$side.raw" >"$out/$name.$side"
+    rm "$out/$name.$side.raw"
+    echo "$status" >>"$out/$name.$side"
+  done
   runs=$((runs + 1))
-  if [[ $old_status != "$new_status" ]] || ! cmp -s "$out/$name.old" "$out/$name.new" ||
-    { [[ -e $out/$name.old.json ]] && ! cmp -s "$out/$name.old.json" "$out/$name.new.json"; }; then
-    echo "DIFFERENT: $name (exit $old_status vs $new_status; diff $out/$name.old $out/$name.new)"
+  if ! cmp -s "$out/$name.old" "$out/$name.new" ||
+    { [[ -e $out/$name.old.json || -e $out/$name.new.json ]] && ! cmp -s "$out/$name.old.json" "$out/$name.new.json"; }; then
+    echo "DIFFERENT: $name (diff $out/$name.old $out/$name.new)"
     differ=$((differ + 1))
   fi
 }
@@ -29,18 +49,16 @@ for scene in examples/*/scene.json; do
   example=$(basename "$(dirname "$scene")")
   compare "$example-energy" check "$scene" --energy --json
   # Each transition with a collision: a hint for the first part of its first interval, and --auto.
-  python3 - "$out/$example-energy.new" <<'PY' >"$out/$example-pairs"
+  # (Tab-separated: names may hold spaces.)
+  python3 - "$out/$example-energy.new" <<'PY' >"$out/$example-pairs" || exit 2
 import json, sys
-try:
-    report = json.load(open(sys.argv[1]))
-except ValueError:
-    sys.exit(0)
-for t in report.get("transitions", []):
-    intervals = t.get("intervals", [])
-    if intervals:
-        print(t["name"], intervals[0]["parts"][0])
+text = open(sys.argv[1]).read()
+report = json.loads(text[: text.rstrip().rfind("\n")])  # the last line is the exit status
+for t in report["transitions"]:
+    if t["intervals"]:
+        print(t["name"], t["intervals"][0]["parts"][0], sep="\t")
 PY
-  while read -r transition part; do
+  while IFS=$'\t' read -r transition part; do
     compare "$example-$transition-hint" resolve "$scene" --transition "$transition" --hint "$part" --json
     compare "$example-$transition-auto" resolve "$scene" --transition "$transition" --auto -o @OUT@ --json
   done <"$out/$example-pairs"

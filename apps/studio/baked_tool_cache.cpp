@@ -5,10 +5,20 @@
 
 namespace reconfig::studio {
 
+namespace {
+
+/// Equal sizes and entries (Eigen's == alone requires equal sizes).
+template <class Matrix>
+bool same(const Matrix& a, const Matrix& b) {
+  return a.rows() == b.rows() && a.cols() == b.cols() && a == b;
+}
+
+}  // namespace
+
 bool BakedToolCache::same_as_last(const geometry::Mesh& part_mesh, const Eigen::Isometry3d& to_rest,
                                   double coating) const {
-  return key_ && key_->coating == coating && key_->to_rest == to_rest.matrix() && key_->mesh.V == part_mesh.V &&
-         key_->mesh.F == part_mesh.F;
+  return key_ && key_->coating == coating && key_->to_rest == to_rest.matrix() && same(key_->mesh.V, part_mesh.V) &&
+         same(key_->mesh.F, part_mesh.F);
 }
 
 const BakedToolCache::Baked* BakedToolCache::bake(const geometry::Mesh& part_mesh, const Eigen::Isometry3d& to_rest,

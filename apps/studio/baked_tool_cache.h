@@ -5,7 +5,8 @@
 /// Baking a part (placing its mesh in the sculpted part's rest frame, checking that it is
 /// closed, building its signed-distance tree) costs time in the part's size; the sculpt mode
 /// asks for the tool several times per frame. The cache rebakes only when the part's mesh, its
-/// placement or the coating differ from the last bake, compared exactly.
+/// placement or the coating differ from the last bake, compared exactly. Not thread-safe (the
+/// studio's UI thread owns it).
 
 #include <Eigen/Geometry>
 

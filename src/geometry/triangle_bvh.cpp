@@ -210,6 +210,7 @@ void TriangleBvh::for_each_pair_within(const TriangleBvh& other, const Eigen::Is
   std::vector<std::uint8_t> leaf_known(node_count, 0);
   // Raw storage, each box constructed when computed: an array of Eigen boxes would first set
   // every one of them empty. (Their destructors do nothing, so none is called.)
+  static_assert(alignof(Eigen::AlignedBox3d) <= __STDCPP_DEFAULT_NEW_ALIGNMENT__);
   std::unique_ptr<std::byte[]> box_storage(new std::byte[other.order_.size() * sizeof(Eigen::AlignedBox3d)]);
   auto* const triangle_boxes = reinterpret_cast<Eigen::AlignedBox3d*>(box_storage.get());
   const auto moved_leaf_boxes = [&](const Node& leaf) -> const Eigen::AlignedBox3d* {

@@ -221,8 +221,8 @@ IntersectionContour intersection_contour(const PartShape& a, const Eigen::Isomet
     contour.segments.push_back(segment);
   });
   // The tree visits pairs in an order that depends on the traversal only: sort for a stable
-  // answer regardless of which part's tree is walked first (by key, then moved once each:
-  // segments are large).
+  // answer regardless of which part's tree is walked first (by key, then each segment copied
+  // once into place: segments are large).
   std::vector<std::pair<std::pair<int, int>, int>> order(contour.segments.size());
   for (std::size_t s = 0; s < order.size(); ++s)
     order[s] = {{contour.segments[s].triangle_a, contour.segments[s].triangle_b}, static_cast<int>(s)};

@@ -76,6 +76,10 @@ TEST(CertainPlane, ClearCasesAreDecidedAndTouchingOnesAreNot) {
   EXPECT_EQ(certain_side(plane, {5, -3, 0}), 0);                     // on the plane
   EXPECT_EQ(certain_side(plane, {0.2, 0.2, std::nan("")}), 0);       // NaN
   EXPECT_EQ(certain_side(certain_plane(p0, p1, 2 * p1), {0, 0, 1}), 0);  // a degenerate triangle
+  // Where rounding could underflow, no answer: a triangle of 1e-120 edges, a point 1e-120 off.
+  EXPECT_EQ(certain_side(certain_plane(p0, 1e-120 * p1, 1e-120 * p2), {0, 0, 1}), 0);
+  EXPECT_EQ(certain_side(plane, {0, 0, 1e-120}), 0);
+  EXPECT_EQ(certain_side(plane, {0, 0, 1e-90}), 1);
   const auto sides = [&](const Eigen::Vector3d& q0, const Eigen::Vector3d& q1, const Eigen::Vector3d& q2) {
     return certain_sides(plane, {q0, q1, q2});
   };

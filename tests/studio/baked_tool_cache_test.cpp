@@ -38,6 +38,21 @@ TEST(BakedToolCache, RebakesWhenTheMeshThePlacementOrTheCoatingChanges) {
   EXPECT_EQ(edited->mesh.V(0, 0), box.V(0, 0) + 1e-12);
 }
 
+TEST(BakedToolCache, AMeshThatLostItsLastFacesIsNotTheOneBakedBefore) {
+  BakedToolCache cache;
+  const geometry::Mesh box = geometry::make_box(Eigen::Vector3d(1, 1, 1));
+  ASSERT_NE(cache.bake(box, shifted(0), 0.01), nullptr);
+  geometry::Mesh fewer = box;  // the same faces but the last: what a remeshing undo can leave
+  fewer.F.conservativeResize(box.F.rows() - 1, 3);
+  EXPECT_EQ(cache.bake(fewer, shifted(0), 0.01), nullptr);  // open: refused, not the closed box
+  EXPECT_EQ(cache.bakes(), 2);
+  geometry::Mesh more_vertices = box;  // an unused vertex added: a different mesh
+  more_vertices.V.conservativeResize(box.V.rows() + 1, 3);
+  more_vertices.V.row(box.V.rows()) = Eigen::RowVector3d(5, 5, 5);
+  cache.bake(more_vertices, shifted(0), 0.01);
+  EXPECT_EQ(cache.bakes(), 3);
+}
+
 TEST(BakedToolCache, AnOpenMeshIsNoToolAndStaysRefused) {
   BakedToolCache cache;
   geometry::Mesh open = geometry::make_box(Eigen::Vector3d(1, 1, 1));

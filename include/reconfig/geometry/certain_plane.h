@@ -15,7 +15,9 @@ namespace reconfig::geometry {
 /// n = (p1 − p0) × (p2 − p0), and the factor c of its error bound. The computed s(q) is within
 /// sqrt(c)·|q − p0| of the exact orientation determinant orient(p0, p1, p2, q), for
 /// c = 2 (32 ε)² (|n|² + |p1 − p0|² |p2 − p0|²) — twice the bound the exact triangle test
-/// (`triangle_intersection.h`) uses for its own crossings.
+/// (`triangle_intersection.h`) uses for its own crossings. The bound is relative, so a test
+/// where squared lengths fall below 1e-200 (edges or distances under 1e-100, where rounding
+/// would underflow) does not answer.
 struct CertainPlane {
   Eigen::Vector3d origin;   ///< p0
   Eigen::Vector3d normal;   ///< n, not normalized
