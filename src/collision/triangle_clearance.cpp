@@ -3,7 +3,6 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 #include "reconfig/geometry/triangle_closest_points.h"
 
@@ -55,8 +54,8 @@ class ClearanceSearch {
 
   /// Whether some direction — from a's nearest point to b's, or either normal — keeps the
   /// triangles at least C apart at both ends of [lo, hi] (then throughout: the gap is concave).
-  bool apart_throughout(const TriangleCorners& a, const TriangleCorners& b, const geometry::TriangleClosestPoints& near, double lo,
-                        double hi) const {
+  bool apart_throughout(const TriangleCorners& a, const TriangleCorners& b,
+                        const geometry::TriangleClosestPoints& near, double lo, double hi) const {
     const TriangleCorners a_lo = corners_at(r_.a_start, r_.a_end, lo), a_hi = corners_at(r_.a_start, r_.a_end, hi);
     const TriangleCorners b_lo = corners_at(r_.b_start, r_.b_end, lo), b_hi = corners_at(r_.b_start, r_.b_end, hi);
     const double needed = r_.clearance + r_.rounding;

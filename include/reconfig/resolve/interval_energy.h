@@ -26,10 +26,10 @@ struct IntervalEnergy {
 /// The energy of `interval` of `transition` over its time extent widened by `time_margin` on
 /// both sides (clipped to [0, 1]): the interval's ends are exact (to the detector's time
 /// error), and the margin keeps the approach and the departure, where only the proximity term
-/// is non-zero, inside the integral. With
-/// `part` ≥ 0 only the pairs (part, other) are summed, `part` being each pair's part a. The
-/// proximity term's reach is `proximity_reach` if given, else that of the design's own detector
-/// settings (`proximity.h`): pass the detector's when it was run with other settings.
+/// is non-zero, inside the integral. With `part` ≥ 0 only the pairs (part, other) are summed,
+/// `part` being each pair's part a. The proximity term's reach is `proximity_reach` if given,
+/// else that of the design's own detector settings (`proximity.h`): pass the detector's when it
+/// was run with other settings.
 IntervalEnergy interval_energy(const scene::Reconfigurable& scene, ShapeCache& shapes, int transition,
                                const collision::CollisionInterval& interval, double time_margin = 0.01, int part = -1,
                                std::optional<double> proximity_reach = std::nullopt);
