@@ -1,7 +1,6 @@
 #include "reconfig/geometry/triangle_bvh.h"
 
 #include "reconfig/geometry/closest_point_on_triangle.h"
-#include "reconfig/geometry/moved_vertices.h"
 
 #include <algorithm>
 #include <array>
@@ -88,7 +87,12 @@ TriangleBvh::TriangleBvh(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F) :
     stack.push_back({left, task.begin, mid});
   }
   ordered_boxes_.resize(n);
-  for (int k = 0; k < n; ++k) ordered_boxes_[k] = boxes[order_[k]];
+  ordered_corners_.resize(n);
+  for (int k = 0; k < n; ++k) {
+    const int f = order_[k];
+    ordered_boxes_[k] = boxes[f];
+    ordered_corners_[k] = {V_.row(F_(f, 0)).transpose(), V_.row(F_(f, 1)).transpose(), V_.row(F_(f, 2)).transpose()};
+  }
 }
 
 const Eigen::AlignedBox3d& TriangleBvh::bounds() const { return nodes_.front().box; }
@@ -114,10 +118,29 @@ void TriangleBvh::for_each_overlapping(const Eigen::AlignedBox3d& box, const std
   }
 }
 
-template <class OtherNodeBox, class OtherLeafBoxes>
+template <class OtherLeafBoxes, class Visit>
+void TriangleBvh::visit_leaf_pair(const Node& a, const Eigen::AlignedBox3d& b_box, const Node& b,
+                                  const OtherLeafBoxes& other_leaf_boxes, const Visit& visit) const {
+  // The triangles of each leaf that meet the other leaf's box: only those can meet each other
+  // (a triangle's box lies in its node's box), and each side is tested once instead of per pair.
+  std::array<int, kPairLeafSize> near_a, near_b;
+  int count_a = 0, count_b = 0;
+  for (int k = a.begin; k < a.end; ++k)
+    if (ordered_boxes_[k].intersects(b_box)) near_a[count_a++] = k;
+  if (count_a == 0) return;
+  const Eigen::AlignedBox3d* other_boxes = other_leaf_boxes(b);
+  for (int l = b.begin; l < b.end; ++l)
+    if (other_boxes[l - b.begin].intersects(a.box)) near_b[count_b++] = l;
+  for (int i = 0; i < count_a; ++i) {
+    const Eigen::AlignedBox3d& fbox = ordered_boxes_[near_a[i]];
+    for (int j = 0; j < count_b; ++j)
+      if (fbox.intersects(other_boxes[near_b[j] - b.begin])) visit(near_a[i], near_b[j]);
+  }
+}
+
+template <class OtherNodeBox, class OtherLeafBoxes, class Visit>
 void TriangleBvh::visit_overlapping_pairs(const TriangleBvh& other, const OtherNodeBox& other_node_box,
-                                          const OtherLeafBoxes& other_leaf_boxes,
-                                          const std::function<void(int f, int g)>& visit) const {
+                                          const OtherLeafBoxes& other_leaf_boxes, const Visit& visit) const {
   if (nodes_.front().begin == nodes_.front().end || other.nodes_.front().begin == other.nodes_.front().end) return;
   struct Item {
     int i, j;
@@ -138,14 +161,7 @@ void TriangleBvh::visit_overlapping_pairs(const TriangleBvh& other, const OtherN
     const Node& b = other.nodes_[item.j];
     const bool a_leaf = a.end - a.begin <= kPairLeafSize, b_leaf = b.end - b.begin <= kPairLeafSize;
     if (a_leaf && b_leaf) {
-      const Eigen::AlignedBox3d* other_boxes = nullptr;  // looked up once a triangle of a meets b's box
-      for (int k = a.begin; k < a.end; ++k) {
-        const Eigen::AlignedBox3d& fbox = ordered_boxes_[k];
-        if (!fbox.intersects(item.b_box)) continue;
-        if (other_boxes == nullptr) other_boxes = other_leaf_boxes(b);
-        for (int l = b.begin; l < b.end; ++l)
-          if (fbox.intersects(other_boxes[l - b.begin])) visit(order_[k], other.order_[l]);
-      }
+      visit_leaf_pair(a, item.b_box, b, other_leaf_boxes, visit);
       continue;
     }
     // Descend the larger (by volume-free measure: diagonal) of two inner nodes, or the inner one.
@@ -168,7 +184,69 @@ void TriangleBvh::for_each_overlapping_pair(const TriangleBvh& other,
                                             const std::function<void(int f, int g)>& visit) const {
   visit_overlapping_pairs(
       other, [](const Node& node) { return node.box; },
-      [&](const Node& leaf) { return other.ordered_boxes_.data() + leaf.begin; }, visit);
+      [&](const Node& leaf) { return other.ordered_boxes_.data() + leaf.begin; },
+      [&](int k, int l) { visit(order_[k], other.order_[l]); });
+}
+
+template <class Visit>
+void TriangleBvh::visit_placed_pairs(const TriangleBvh& other, const Eigen::Isometry3d& other_to_this,
+                                     double distance, const Visit& visit) const {
+  const Eigen::Matrix3d R = other_to_this.linear();
+  const Eigen::Matrix3d R_abs = R.cwiseAbs();
+  // The box around a moved box: its center moved, its half extents through |R| (exact for
+  // the moved box's corners), widened by a few ulps of the coordinates for the rounding of R.
+  // Each is computed once: the traversal meets a node of `other` against many of this tree's.
+  // Raw storage below, each element constructed when computed: arrays of Eigen objects would
+  // first initialize every one of them. (Their destructors do nothing, so none is called.)
+  static_assert(alignof(Eigen::AlignedBox3d) <= __STDCPP_DEFAULT_NEW_ALIGNMENT__);
+  static_assert(alignof(TriangleCorners) <= __STDCPP_DEFAULT_NEW_ALIGNMENT__);
+  const std::size_t node_count = other.nodes_.size();
+  std::vector<std::uint8_t> node_known(node_count, 0);
+  std::unique_ptr<std::byte[]> node_storage(new std::byte[node_count * sizeof(Eigen::AlignedBox3d)]);
+  auto* const node_boxes = reinterpret_cast<Eigen::AlignedBox3d*>(node_storage.get());
+  const auto node_box = [&](const Node& node) -> const Eigen::AlignedBox3d& {
+    const std::size_t j = &node - other.nodes_.data();
+    if (!node_known[j]) {
+      const Eigen::AlignedBox3d& box = node.box;
+      if (box.isEmpty()) {
+        new (node_boxes + j) Eigen::AlignedBox3d(box);
+      } else {
+        const Eigen::Vector3d c = other_to_this * box.center();
+        const Eigen::Vector3d h = R_abs * (0.5 * box.sizes());
+        const double pad = 1e-12 * (c.cwiseAbs().maxCoeff() + h.maxCoeff()) + distance;
+        new (node_boxes + j) Eigen::AlignedBox3d(c - h - Eigen::Vector3d::Constant(pad), c + h + Eigen::Vector3d::Constant(pad));
+      }
+      node_known[j] = 1;
+    }
+    return node_boxes[j];
+  };
+  // The moved corners of a leaf's triangles and their boxes, computed once, when the leaf is
+  // first met.
+  std::vector<std::uint8_t> leaf_known(node_count, 0);
+  const std::size_t n = other.order_.size();
+  std::unique_ptr<std::byte[]> box_storage(new std::byte[n * sizeof(Eigen::AlignedBox3d)]);
+  std::unique_ptr<std::byte[]> corner_storage(new std::byte[n * sizeof(TriangleCorners)]);
+  auto* const triangle_boxes = reinterpret_cast<Eigen::AlignedBox3d*>(box_storage.get());
+  auto* const moved_corners = reinterpret_cast<TriangleCorners*>(corner_storage.get());
+  const auto moved_leaf_boxes = [&](const Node& leaf) -> const Eigen::AlignedBox3d* {
+    const std::size_t j = &leaf - other.nodes_.data();
+    if (leaf_known[j]) return triangle_boxes + leaf.begin;
+    for (int k = leaf.begin; k < leaf.end; ++k) {
+      const TriangleCorners& rest = other.ordered_corners_[k];
+      TriangleCorners* moved = new (moved_corners + k)
+          TriangleCorners{other_to_this * rest[0], other_to_this * rest[1], other_to_this * rest[2]};
+      Eigen::AlignedBox3d* box = new (triangle_boxes + k) Eigen::AlignedBox3d((*moved)[0]);
+      box->extend((*moved)[1]);
+      box->extend((*moved)[2]);
+      if (distance > 0) {
+        box->min().array() -= distance;
+        box->max().array() += distance;
+      }
+    }
+    leaf_known[j] = 1;
+    return triangle_boxes + leaf.begin;
+  };
+  visit_overlapping_pairs(other, node_box, moved_leaf_boxes, [&](int k, int l) { visit(k, l, moved_corners[l]); });
 }
 
 void TriangleBvh::for_each_overlapping_pair(const TriangleBvh& other, const Eigen::Isometry3d& other_to_this,
@@ -176,61 +254,17 @@ void TriangleBvh::for_each_overlapping_pair(const TriangleBvh& other, const Eige
   for_each_pair_within(other, other_to_this, 0.0, visit);
 }
 
+void TriangleBvh::for_each_overlapping_pair(const TriangleBvh& other, const Eigen::Isometry3d& other_to_this,
+                                            const std::function<void(const PlacedPair& pair)>& visit) const {
+  visit_placed_pairs(other, other_to_this, 0.0, [&](int k, int l, const TriangleCorners& moved) {
+    visit(PlacedPair{order_[k], other.order_[l], ordered_corners_[k], moved});
+  });
+}
+
 void TriangleBvh::for_each_pair_within(const TriangleBvh& other, const Eigen::Isometry3d& other_to_this,
                                        double distance, const std::function<void(int f, int g)>& visit) const {
-  // Each vertex of `other` is moved once, when first met.
-  MovedVertices other_moved(other.V_, other_to_this);
-  const Eigen::Matrix3d R = other_to_this.linear();
-  const Eigen::Matrix3d R_abs = R.cwiseAbs();
-  // The box around a moved box: its center moved, its half extents through |R| (exact for
-  // the moved box's corners), widened by a few ulps of the coordinates for the rounding of R.
-  // Each is computed once: the traversal meets a node of `other` against many of this tree's.
-  const std::size_t node_count = other.nodes_.size();
-  std::vector<std::uint8_t> node_known(node_count, 0);
-  std::unique_ptr<Eigen::Vector3d[]> node_min(new Eigen::Vector3d[node_count]), node_max(new Eigen::Vector3d[node_count]);
-  const auto node_box = [&](const Node& node) {
-    const std::size_t j = &node - other.nodes_.data();
-    if (!node_known[j]) {
-      const Eigen::AlignedBox3d& box = node.box;
-      if (box.isEmpty()) {
-        node_min[j] = box.min();
-        node_max[j] = box.max();
-      } else {
-        const Eigen::Vector3d c = other_to_this * box.center();
-        const Eigen::Vector3d h = R_abs * (0.5 * box.sizes());
-        const double pad = 1e-12 * (c.cwiseAbs().maxCoeff() + h.maxCoeff()) + distance;
-        node_min[j] = c - h - Eigen::Vector3d::Constant(pad);
-        node_max[j] = c + h + Eigen::Vector3d::Constant(pad);
-      }
-      node_known[j] = 1;
-    }
-    return Eigen::AlignedBox3d(node_min[j], node_max[j]);
-  };
-  // The boxes of a leaf's moved triangles, computed once, when the leaf is first met.
-  std::vector<std::uint8_t> leaf_known(node_count, 0);
-  // Raw storage, each box constructed when computed: an array of Eigen boxes would first set
-  // every one of them empty. (Their destructors do nothing, so none is called.)
-  static_assert(alignof(Eigen::AlignedBox3d) <= __STDCPP_DEFAULT_NEW_ALIGNMENT__);
-  std::unique_ptr<std::byte[]> box_storage(new std::byte[other.order_.size() * sizeof(Eigen::AlignedBox3d)]);
-  auto* const triangle_boxes = reinterpret_cast<Eigen::AlignedBox3d*>(box_storage.get());
-  const auto moved_leaf_boxes = [&](const Node& leaf) -> const Eigen::AlignedBox3d* {
-    Eigen::AlignedBox3d* boxes = triangle_boxes + leaf.begin;
-    const std::size_t j = &leaf - other.nodes_.data();
-    if (leaf_known[j]) return boxes;
-    for (int k = leaf.begin; k < leaf.end; ++k) {
-      const int g = other.order_[k];
-      Eigen::AlignedBox3d* box = new (boxes + (k - leaf.begin)) Eigen::AlignedBox3d(other_moved[other.F_(g, 0)]);
-      box->extend(other_moved[other.F_(g, 1)]);
-      box->extend(other_moved[other.F_(g, 2)]);
-      if (distance > 0) {
-        box->min().array() -= distance;
-        box->max().array() += distance;
-      }
-    }
-    leaf_known[j] = 1;
-    return boxes;
-  };
-  visit_overlapping_pairs(other, node_box, moved_leaf_boxes, visit);
+  visit_placed_pairs(other, other_to_this, distance,
+                     [&](int k, int l, const TriangleCorners&) { visit(order_[k], other.order_[l]); });
 }
 
 TriangleBvh::Nearest TriangleBvh::nearest(const Eigen::Vector3d& q, double max_distance) const {
@@ -251,9 +285,8 @@ TriangleBvh::Nearest TriangleBvh::nearest(const Eigen::Vector3d& q, double max_d
         // The triangle's box is no farther than the triangle (a little slack for rounding).
         if (ordered_boxes_[i].squaredExteriorDistance(q) > best_d2 * (1 + 1e-9)) continue;
         const int f = order_[i];
-        const Eigen::Vector3d p = closest_point_on_triangle(q, V_.row(F_(f, 0)).transpose(), V_.row(F_(f, 1)).transpose(),
-                                                            V_.row(F_(f, 2)).transpose())
-                                      .point;
+        const TriangleCorners& t = ordered_corners_[i];
+        const Eigen::Vector3d p = closest_point_on_triangle(q, t[0], t[1], t[2]).point;
         const double e2 = (p - q).squaredNorm();
         if (e2 < best_d2 || (best.triangle < 0 && e2 <= best_d2)) {
           best_d2 = e2;

@@ -10,44 +10,29 @@
 #include <vector>
 
 #include "reconfig/geometry/certain_plane.h"
-#include "reconfig/geometry/moved_vertices.h"
 #include "reconfig/geometry/triangle_intersection.h"
 
 namespace reconfig::resolve {
 namespace {
 
-using Triangle = std::array<Eigen::Vector3d, 3>;
-
-Triangle rest_triangle(const geometry::TriangleBvh& tree, int f) {
-  const Eigen::MatrixX3d& V = tree.vertices();
-  const Eigen::MatrixX3i& F = tree.faces();
-  return {V.row(F(f, 0)).transpose(), V.row(F(f, 1)).transpose(), V.row(F(f, 2)).transpose()};
-}
-
-Triangle moved_triangle(const geometry::TriangleBvh& tree, int f, geometry::MovedVertices& moved) {
-  const Eigen::MatrixX3i& F = tree.faces();
-  return {moved[F(f, 0)], moved[F(f, 1)], moved[F(f, 2)]};
-}
+using Triangle = geometry::TriangleCorners;
 
 /// The planes of a moved mesh's triangles (`certain_plane.h`), each computed once, when first
 /// asked for, from the moved corners: a tree query meets each triangle in several pairs.
 class MovedPlanes {
  public:
-  MovedPlanes(const geometry::TriangleBvh& tree, geometry::MovedVertices& moved)
-      : tree_(tree), moved_(moved), planes_(new geometry::CertainPlane[tree.faces().rows()]), known_(tree.faces().rows(), 0) {}
+  explicit MovedPlanes(int face_count) : planes_(new geometry::CertainPlane[face_count]), known_(face_count, 0) {}
 
-  const geometry::CertainPlane& operator[](int f) {
+  /// The plane of face f, whose corners are `moved` (the same for every call with f).
+  const geometry::CertainPlane& operator()(int f, const Triangle& moved) {
     if (!known_[f]) {
-      const Eigen::MatrixX3i& F = tree_.faces();
-      planes_[f] = geometry::certain_plane(moved_[F(f, 0)], moved_[F(f, 1)], moved_[F(f, 2)]);
+      planes_[f] = geometry::certain_plane(moved[0], moved[1], moved[2]);
       known_[f] = 1;
     }
     return planes_[f];
   }
 
  private:
-  const geometry::TriangleBvh& tree_;
-  geometry::MovedVertices& moved_;
   std::unique_ptr<geometry::CertainPlane[]> planes_;
   std::vector<std::uint8_t> known_;
 };
@@ -195,21 +180,22 @@ IntersectionContour intersection_contour(const PartShape& a, const Eigen::Isomet
   const Eigen::Isometry3d b_to_a = place_a.inverse() * place_b;
   const PairContext ctx{a, b, place_a};
   IntersectionContour contour;
-  geometry::MovedVertices b_moved(b.tree().vertices(), b_to_a);  // each of b's corners moved once
-  MovedPlanes b_planes(b.tree(), b_moved);
-  a.tree().for_each_overlapping_pair(b.tree(), b_to_a, [&](int fa, int fb) {
+  MovedPlanes b_planes(static_cast<int>(b.tree().faces().rows()));
+  a.tree().for_each_overlapping_pair(b.tree(), b_to_a, [&](const geometry::TriangleBvh::PlacedPair& pair) {
+    const int fa = pair.f, fb = pair.g;
+    const Triangle& ta = pair.f_corners;
+    const Triangle& tb = pair.g_corners;
     // The exact test below decides the same as these two filters where they are certain, and
     // takes the sides they are certain of.
-    const Triangle tb = moved_triangle(b.tree(), fb, b_moved);
     const geometry::KnownSides side_b = geometry::certain_sides(a.planes[fa], tb);
     if (geometry::all_on_one_side(side_b)) return;
-    const Triangle ta = rest_triangle(a.tree(), fa);
-    const geometry::KnownSides side_a = geometry::certain_sides(b_planes[fb], ta);
+    const geometry::CertainPlane& plane_b = b_planes(fb, tb);
+    const geometry::KnownSides side_a = geometry::certain_sides(plane_b, ta);
     if (geometry::all_on_one_side(side_a)) return;
     const geometry::TriangleContact contact =
         geometry::intersect_triangles(ta[0], ta[1], ta[2], tb[0], tb[1], tb[2], side_a, side_b);
     if (!contact.intersect || contact.coplanar || contact.points.size() != 2) return;
-    const CrossingPair crossing{fa, fb, ta, tb, a.planes[fa].normal.normalized(), b_planes[fb].normal.normalized()};
+    const CrossingPair crossing{fa, fb, ta, tb, a.planes[fa].normal.normalized(), plane_b.normal.normalized()};
     const double weight = edge_weight(ta, fa, a, Eigen::Isometry3d::Identity(), tb[0], crossing.nb) *
                           edge_weight(tb, fb, b, b_to_a, ta[0], crossing.na);
     if (weight == 0) return;

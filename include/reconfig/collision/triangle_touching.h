@@ -28,10 +28,11 @@
 #include <vector>
 
 #include "reconfig/collision/triangle_pair_ccd.h"
+#include "reconfig/geometry/triangle_corners.h"
 
 namespace reconfig::collision {
 
-using TriangleCorners = std::array<Eigen::Vector3d, 3>;
+using geometry::TriangleCorners;
 
 /// Whether triangles a and b (which the caller knows to intersect, or to come near) only touch
 /// within `delta` (the definition above).

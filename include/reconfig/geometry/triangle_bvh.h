@@ -8,6 +8,8 @@
 #include <limits>
 #include <vector>
 
+#include "reconfig/geometry/triangle_corners.h"
+
 namespace reconfig::geometry {
 
 /// Bounding-box hierarchy over triangles, built top-down by median split on the axis of
@@ -36,6 +38,19 @@ class TriangleBvh {
   void for_each_overlapping_pair(const TriangleBvh& other, const Eigen::Isometry3d& other_to_this,
                                  const std::function<void(int f, int g)>& visit) const;
 
+  /// Two triangles whose boxes may overlap, with their corners in this tree's frame (`g`'s
+  /// moved by the query's map: `other_to_this * corner`, each corner mapped once per query).
+  /// The references are valid during the call only.
+  struct PlacedPair {
+    int f, g;
+    const TriangleCorners& f_corners;
+    const TriangleCorners& g_corners;
+  };
+  /// The pairs of the placed `for_each_overlapping_pair`, with their corners: callers that test
+  /// the triangles need not look them up (or move `other`'s) again.
+  void for_each_overlapping_pair(const TriangleBvh& other, const Eigen::Isometry3d& other_to_this,
+                                 const std::function<void(const PlacedPair& pair)>& visit) const;
+
   /// As the placed `for_each_overlapping_pair`, with `other`'s boxes grown by `distance` ≥ 0 on
   /// every side: every pair of triangles closer than `distance` to each other is visited.
   void for_each_pair_within(const TriangleBvh& other, const Eigen::Isometry3d& other_to_this, double distance,
@@ -60,20 +75,32 @@ class TriangleBvh {
     int left = -1, right = -1;  ///< children, or -1 for a leaf
     int begin = 0, end = 0;     ///< leaf: range in order_
   };
-  /// The pair traversal of both `for_each_overlapping_pair`s: `other_node_box(node)` gives
-  /// the box of a node of `other` in this tree's frame, `other_leaf_boxes(node)` the boxes of
-  /// its triangles there (a pointer to node.end − node.begin boxes, in `other.order_`'s order,
-  /// valid until the traversal ends).
-  template <class OtherNodeBox, class OtherLeafBoxes>
+  /// The pair traversal of every pair query: `other_node_box(node)` gives the box of a node of
+  /// `other` in this tree's frame, `other_leaf_boxes(node)` the boxes of its triangles there (a
+  /// pointer to node.end − node.begin boxes, in `other.order_`'s order, valid until the
+  /// traversal ends); `visit(k, l)` gets the positions in `order_` and `other.order_`.
+  template <class OtherNodeBox, class OtherLeafBoxes, class Visit>
   void visit_overlapping_pairs(const TriangleBvh& other, const OtherNodeBox& other_node_box,
-                               const OtherLeafBoxes& other_leaf_boxes,
-                               const std::function<void(int f, int g)>& visit) const;
+                               const OtherLeafBoxes& other_leaf_boxes, const Visit& visit) const;
+
+  /// The pairs of two leaves' triangles whose boxes overlap (`b_box`: leaf b's box in this
+  /// frame; `other_leaf_boxes` and `visit` as above).
+  template <class OtherLeafBoxes, class Visit>
+  void visit_leaf_pair(const Node& a, const Eigen::AlignedBox3d& b_box, const Node& b,
+                       const OtherLeafBoxes& other_leaf_boxes, const Visit& visit) const;
+
+  /// The placed pair traversal: `visit(k, l, moved_corners)` with the corners of
+  /// other.order_[l] moved into this frame.
+  template <class Visit>
+  void visit_placed_pairs(const TriangleBvh& other, const Eigen::Isometry3d& other_to_this, double distance,
+                          const Visit& visit) const;
 
   Eigen::MatrixX3d V_;
   Eigen::MatrixX3i F_;
   std::vector<Node> nodes_;
   std::vector<int> order_;  ///< triangle indices, grouped by leaf
   std::vector<Eigen::AlignedBox3d> ordered_boxes_;  ///< box of triangle order_[k], by k
+  std::vector<TriangleCorners> ordered_corners_;    ///< corners of triangle order_[k], by k
 };
 
 }  // namespace reconfig::geometry

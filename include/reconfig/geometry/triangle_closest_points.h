@@ -5,11 +5,9 @@
 
 #include <Eigen/Core>
 
-#include <array>
+#include "reconfig/geometry/triangle_corners.h"
 
 namespace reconfig::geometry {
-
-using TriangleCorners = std::array<Eigen::Vector3d, 3>;
 
 struct TriangleClosestPoints {
   double distance = 0;  ///< |on_a − on_b|; 0 where the closed triangles share a point
