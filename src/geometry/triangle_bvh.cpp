@@ -257,7 +257,7 @@ void TriangleBvh::for_each_overlapping_pair(const TriangleBvh& other, const Eige
 void TriangleBvh::for_each_overlapping_pair(const TriangleBvh& other, const Eigen::Isometry3d& other_to_this,
                                             const std::function<void(const PlacedPair& pair)>& visit) const {
   visit_placed_pairs(other, other_to_this, 0.0, [&](int k, int l, const TriangleCorners& moved) {
-    visit(PlacedPair{order_[k], other.order_[l], ordered_corners_[k], moved});
+    visit(PlacedPair{order_[k], other.order_[l], k, l, ordered_corners_[k], moved});
   });
 }
 

@@ -18,18 +18,20 @@ namespace {
 using Triangle = geometry::TriangleCorners;
 
 /// The planes of a moved mesh's triangles (`certain_plane.h`), each computed once, when first
-/// asked for, from the moved corners: a tree query meets each triangle in several pairs.
+/// asked for, from the moved corners: a tree query meets each triangle in several pairs. Kept
+/// by the triangle's position in its tree's leaf order (`PlacedPair::g_position`).
 class MovedPlanes {
  public:
   explicit MovedPlanes(int face_count) : planes_(new geometry::CertainPlane[face_count]), known_(face_count, 0) {}
 
-  /// The plane of face f, whose corners are `moved` (the same for every call with f).
-  const geometry::CertainPlane& operator()(int f, const Triangle& moved) {
-    if (!known_[f]) {
-      planes_[f] = geometry::certain_plane(moved[0], moved[1], moved[2]);
-      known_[f] = 1;
+  /// The plane of the triangle at `position`, whose corners are `moved` (the same for every
+  /// call with that position).
+  const geometry::CertainPlane& operator()(int position, const Triangle& moved) {
+    if (!known_[position]) {
+      planes_[position] = geometry::certain_plane(moved[0], moved[1], moved[2]);
+      known_[position] = 1;
     }
-    return planes_[f];
+    return planes_[position];
   }
 
  private:
@@ -187,15 +189,16 @@ IntersectionContour intersection_contour(const PartShape& a, const Eigen::Isomet
     const Triangle& tb = pair.g_corners;
     // The exact test below decides the same as these two filters where they are certain, and
     // takes the sides they are certain of.
-    const geometry::KnownSides side_b = geometry::certain_sides(a.planes[fa], tb);
+    const geometry::CertainPlane& plane_a = a.planes[pair.f_position];
+    const geometry::KnownSides side_b = geometry::certain_sides(plane_a, tb);
     if (geometry::all_on_one_side(side_b)) return;
-    const geometry::CertainPlane& plane_b = b_planes(fb, tb);
+    const geometry::CertainPlane& plane_b = b_planes(pair.g_position, tb);
     const geometry::KnownSides side_a = geometry::certain_sides(plane_b, ta);
     if (geometry::all_on_one_side(side_a)) return;
     const geometry::TriangleContact contact =
         geometry::intersect_triangles(ta[0], ta[1], ta[2], tb[0], tb[1], tb[2], side_a, side_b);
     if (!contact.intersect || contact.coplanar || contact.points.size() != 2) return;
-    const CrossingPair crossing{fa, fb, ta, tb, a.planes[fa].normal.normalized(), plane_b.normal.normalized()};
+    const CrossingPair crossing{fa, fb, ta, tb, plane_a.normal.normalized(), plane_b.normal.normalized()};
     const double weight = edge_weight(ta, fa, a, Eigen::Isometry3d::Identity(), tb[0], crossing.nb) *
                           edge_weight(tb, fb, b, b_to_a, ta[0], crossing.na);
     if (weight == 0) return;

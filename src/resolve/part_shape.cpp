@@ -56,7 +56,7 @@ PartShape::PartShape(const geometry::Mesh& mesh, int max_samples) : distance(mes
   const Eigen::MatrixX3d& V = tree().vertices();
   const Eigen::MatrixX3i& F = tree().faces();
   planes.reserve(F.rows());
-  for (int f = 0; f < F.rows(); ++f)
+  for (const int f : tree().leaf_order())
     planes.push_back(
         geometry::certain_plane(V.row(F(f, 0)).transpose(), V.row(F(f, 1)).transpose(), V.row(F(f, 2)).transpose()));
   closed = std::all_of(neighbors.begin(), neighbors.end(),

@@ -43,6 +43,7 @@ class TriangleBvh {
   /// The references are valid during the call only.
   struct PlacedPair {
     int f, g;
+    int f_position, g_position;  ///< of f and g in their trees' `leaf_order()`
     const TriangleCorners& f_corners;
     const TriangleCorners& g_corners;
   };
@@ -65,6 +66,10 @@ class TriangleBvh {
   /// The triangle nearest to `q` and its nearest point (ties: the first found). Searches at
   /// most within `max_distance` (returns triangle −1 when nothing is that close).
   Nearest nearest(const Eigen::Vector3d& q, double max_distance = std::numeric_limits<double>::infinity()) const;
+
+  /// The triangles in the order the leaves hold them (a permutation of 0..#F−1): data kept per
+  /// triangle in this order is read with few cache misses by pair queries (`PlacedPair`).
+  const std::vector<int>& leaf_order() const { return order_; }
 
   const Eigen::MatrixX3d& vertices() const { return V_; }
   const Eigen::MatrixX3i& faces() const { return F_; }

@@ -30,7 +30,8 @@ struct PartShape {
   /// neighbors[f][k]: the face across edge k (corners k → k+1) of face f; −1 on a boundary or
   /// a non-manifold edge.
   std::vector<std::array<int, 3>> neighbors;
-  /// planes[f]: the plane of face f in the rest frame, for the contour's side filter.
+  /// planes[k]: the plane of face tree().leaf_order()[k] in the rest frame, for the contour's
+  /// side filter (in leaf order: a pair query reads the planes of a leaf together).
   std::vector<geometry::CertainPlane> planes;
   /// Every edge has exactly two faces (no −1 in `neighbors`): the signed distance's sign is
   /// exact and Lipschitz.
