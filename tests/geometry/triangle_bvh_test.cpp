@@ -126,6 +126,35 @@ TEST(TriangleBvh, MovedPairQueriesFindEveryPairWhoseMovedBoxesOverlap) {
   EXPECT_GT(found_total, 100u);  // the test is not vacuous
 }
 
+TEST(TriangleBvh, PlacedPairsCarryTheirCornersAndLeafPositions) {
+  std::mt19937 rng(29);
+  std::normal_distribution<double> normal(0, 1);
+  std::size_t found_total = 0;
+  for (int trial = 0; trial < 8; ++trial) {
+    const Mesh a = random_soup(rng, 250, 0.15), b = random_soup(rng, 180, 0.15);
+    Eigen::Isometry3d b_to_a = Eigen::Isometry3d::Identity();
+    b_to_a.linear() = Eigen::Quaterniond(normal(rng), normal(rng), normal(rng), normal(rng)).normalized().toRotationMatrix();
+    b_to_a.translation() = 0.1 * Vector3d(normal(rng), normal(rng), normal(rng));
+    const TriangleBvh ta(a.V, a.F), tb(b.V, b.F);
+    Pairs plain, placed;
+    ta.for_each_overlapping_pair(tb, b_to_a, [&](int f, int g) { plain.emplace_back(f, g); });
+    ta.for_each_overlapping_pair(tb, b_to_a, [&](const TriangleBvh::PlacedPair& pair) {
+      placed.emplace_back(pair.f, pair.g);
+      EXPECT_EQ(ta.leaf_order()[pair.f_position], pair.f);
+      EXPECT_EQ(tb.leaf_order()[pair.g_position], pair.g);
+      for (int k = 0; k < 3; ++k) {
+        // f's rest corners, and g's moved as `b_to_a * corner`: the same doubles.
+        EXPECT_EQ(pair.f_corners[k], Vector3d(a.V.row(a.F(pair.f, k)).transpose()));
+        EXPECT_EQ(pair.g_corners[k], b_to_a * Vector3d(b.V.row(b.F(pair.g, k)).transpose()));
+      }
+    });
+    // The same pairs in the same order as the plain placed query.
+    EXPECT_EQ(placed, plain) << trial;
+    found_total += placed.size();
+  }
+  EXPECT_GT(found_total, 100u);  // the test is not vacuous
+}
+
 TEST(TriangleBvh, PairsWithinADistanceIncludeEveryPairWhoseGrownBoxesOverlap) {
   std::mt19937 rng(17);
   std::normal_distribution<double> normal(0, 1);
