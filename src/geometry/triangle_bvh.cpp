@@ -9,15 +9,19 @@
 #include <cstdint>
 #include <memory>
 #include <new>
+#include <type_traits>
 #include <utility>
 
 namespace reconfig::geometry {
 namespace {
 
 constexpr int kLeafSize = 4;
-/// The pair traversal stops at nodes of at most this many triangles and compares their
-/// triangles' boxes directly: a box comparison costs less than a step down both trees.
+/// The pair traversal stops at nodes of at most this many triangles (of this tree, and of the
+/// other) and compares their triangles' boxes directly: a box comparison costs less than a step
+/// down both trees. The other's may be larger: its nodes' boxes are the looser ones (moved
+/// boxes, bounded again) and cost more to compute, its triangles' boxes are exact.
 constexpr int kPairLeafSize = 8;
+constexpr int kOtherPairLeafSize = 32;
 
 /// Box of triangle f: exactly the min/max of its double coordinates (no rounding involved).
 Eigen::AlignedBox3d triangle_box(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, int f) {
@@ -123,7 +127,8 @@ void TriangleBvh::visit_leaf_pair(const Node& a, const Eigen::AlignedBox3d& b_bo
                                   const OtherLeafBoxes& other_leaf_boxes, const Visit& visit) const {
   // The triangles of each leaf that meet the other leaf's box: only those can meet each other
   // (a triangle's box lies in its node's box), and each side is tested once instead of per pair.
-  std::array<int, kPairLeafSize> near_a, near_b;
+  std::array<int, kPairLeafSize> near_a;
+  std::array<int, kOtherPairLeafSize> near_b;
   int count_a = 0, count_b = 0;
   for (int k = a.begin; k < a.end; ++k)
     if (ordered_boxes_[k].intersects(b_box)) near_a[count_a++] = k;
@@ -154,12 +159,12 @@ void TriangleBvh::visit_overlapping_pairs(const TriangleBvh& other, const OtherN
   const Eigen::AlignedBox3d root_box = other_node_box(other.nodes_[0]);
   if (!nodes_[0].box.intersects(root_box)) return;
   stack[top++] = {0, 0, root_box};
-  static_assert(kPairLeafSize >= kLeafSize);
+  static_assert(kPairLeafSize >= kLeafSize && kOtherPairLeafSize >= kLeafSize);
   while (top > 0) {
     const Item item = stack[--top];
     const Node& a = nodes_[item.i];
     const Node& b = other.nodes_[item.j];
-    const bool a_leaf = a.end - a.begin <= kPairLeafSize, b_leaf = b.end - b.begin <= kPairLeafSize;
+    const bool a_leaf = a.end - a.begin <= kPairLeafSize, b_leaf = b.end - b.begin <= kOtherPairLeafSize;
     if (a_leaf && b_leaf) {
       visit_leaf_pair(a, item.b_box, b, other_leaf_boxes, visit);
       continue;
@@ -200,6 +205,7 @@ void TriangleBvh::visit_placed_pairs(const TriangleBvh& other, const Eigen::Isom
   // first initialize every one of them. (Their destructors do nothing, so none is called.)
   static_assert(alignof(Eigen::AlignedBox3d) <= __STDCPP_DEFAULT_NEW_ALIGNMENT__);
   static_assert(alignof(TriangleCorners) <= __STDCPP_DEFAULT_NEW_ALIGNMENT__);
+  static_assert(std::is_trivially_destructible_v<TriangleCorners>);  // AlignedBox3d's destructor is empty
   const std::size_t node_count = other.nodes_.size();
   std::vector<std::uint8_t> node_known(node_count, 0);
   std::unique_ptr<std::byte[]> node_storage(new std::byte[node_count * sizeof(Eigen::AlignedBox3d)]);
