@@ -13,7 +13,7 @@ CertainPlane certain_plane(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1,
   plane.origin = p0;
   plane.normal = e1.cross(e2);
   const double scale = plane.normal.squaredNorm() + e1.squaredNorm() * e2.squaredNorm();
-  plane.error_factor = scale >= kCertainPlaneTinySquare ? 2 * bound * bound * scale : std::numeric_limits<double>::infinity();
+  plane.error_factor = scale >= detail::kCertainPlaneTinySquare ? 2 * bound * bound * scale : std::numeric_limits<double>::infinity();
   return plane;
 }
 

@@ -262,15 +262,20 @@ void TriangleBvh::for_each_overlapping_pair(const TriangleBvh& other, const Eige
 
 void TriangleBvh::for_each_overlapping_pair(const TriangleBvh& other, const Eigen::Isometry3d& other_to_this,
                                             const std::function<void(const PlacedPair& pair)>& visit) const {
-  visit_placed_pairs(other, other_to_this, 0.0, [&](int k, int l, const TriangleCorners& moved) {
-    visit(PlacedPair{order_[k], other.order_[l], k, l, ordered_corners_[k], moved});
-  });
+  for_each_pair_within(other, other_to_this, 0.0, visit);
 }
 
 void TriangleBvh::for_each_pair_within(const TriangleBvh& other, const Eigen::Isometry3d& other_to_this,
                                        double distance, const std::function<void(int f, int g)>& visit) const {
   visit_placed_pairs(other, other_to_this, distance,
                      [&](int k, int l, const TriangleCorners&) { visit(order_[k], other.order_[l]); });
+}
+
+void TriangleBvh::for_each_pair_within(const TriangleBvh& other, const Eigen::Isometry3d& other_to_this,
+                                       double distance, const std::function<void(const PlacedPair& pair)>& visit) const {
+  visit_placed_pairs(other, other_to_this, distance, [&](int k, int l, const TriangleCorners& moved) {
+    visit(PlacedPair{order_[k], other.order_[l], k, l, ordered_corners_[k], moved});
+  });
 }
 
 TriangleBvh::Nearest TriangleBvh::nearest(const Eigen::Vector3d& q, double max_distance) const {

@@ -3,16 +3,6 @@
 #include "reconfig/geometry/triangle_closest_points.h"
 
 namespace reconfig::resolve {
-namespace {
-
-geometry::TriangleCorners corners(const geometry::TriangleBvh& tree, int f, const Eigen::Isometry3d& place) {
-  const Eigen::MatrixX3d& V = tree.vertices();
-  const Eigen::MatrixX3i& F = tree.faces();
-  return {place * Eigen::Vector3d(V.row(F(f, 0))), place * Eigen::Vector3d(V.row(F(f, 1))),
-          place * Eigen::Vector3d(V.row(F(f, 2)))};
-}
-
-}  // namespace
 
 Proximity proximity(const PartShape& a, const Eigen::Isometry3d& place_a, const PartShape& b,
                     const Eigen::Isometry3d& place_b, double reach) {
@@ -21,10 +11,9 @@ Proximity proximity(const PartShape& a, const Eigen::Isometry3d& place_a, const 
   result.distance = reach;
   geometry::TriangleClosestPoints nearest;
   nearest.distance = reach;
-  a.tree().for_each_pair_within(b.tree(), b_to_a, reach, [&](int fa, int fb) {
+  a.tree().for_each_pair_within(b.tree(), b_to_a, reach, [&](const geometry::TriangleBvh::PlacedPair& placed) {
     if (nearest.distance == 0) return;
-    const geometry::TriangleClosestPoints pair = geometry::triangle_closest_points(
-        corners(a.tree(), fa, Eigen::Isometry3d::Identity()), corners(b.tree(), fb, b_to_a));
+    const geometry::TriangleClosestPoints pair = geometry::triangle_closest_points(placed.f_corners, placed.g_corners);
     if (pair.distance < nearest.distance) nearest = pair;
   });
   const double deficit = reach - nearest.distance;

@@ -56,6 +56,9 @@ class TriangleBvh {
   /// every side: every pair of triangles closer than `distance` to each other is visited.
   void for_each_pair_within(const TriangleBvh& other, const Eigen::Isometry3d& other_to_this, double distance,
                             const std::function<void(int f, int g)>& visit) const;
+  /// The pairs of `for_each_pair_within`, with their corners (as `PlacedPair` above).
+  void for_each_pair_within(const TriangleBvh& other, const Eigen::Isometry3d& other_to_this, double distance,
+                            const std::function<void(const PlacedPair& pair)>& visit) const;
 
   /// The nearest point of the mesh to a query point.
   struct Nearest {
