@@ -25,6 +25,9 @@ class TriangleBvh {
 
   /// Calls `visit(f)` for every triangle f whose box overlaps `box` (closed boxes).
   void for_each_overlapping(const Eigen::AlignedBox3d& box, const std::function<void(int f)>& visit) const;
+  /// The same, with each triangle's corners (read from the tree's leaf-ordered copy).
+  void for_each_overlapping(const Eigen::AlignedBox3d& box,
+                            const std::function<void(int f, const TriangleCorners& corners)>& visit) const;
 
   /// Calls `visit(f, g)` for every triangle f of this tree and g of `other` whose boxes
   /// overlap (closed boxes). Each pair is visited once.
