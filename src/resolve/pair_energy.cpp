@@ -3,10 +3,9 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <limits>
-#include <span>
+#include <vector>
 
 #include "reconfig/resolve/intersection_contour.h"
 #include "reconfig/resolve/penetration.h"
@@ -22,13 +21,6 @@ Eigen::Isometry3d placement(const scene::Reconfigurable& scene, int transition, 
   return scene.pose_at(transition, part, t).to_isometry(scene.parts[part].center);
 }
 
-/// Samples in time order with what each one's penetration term learned (`PenetrationMemo`),
-/// so that samples added between two neighbours start from theirs.
-struct Samples {
-  std::vector<EnergySample> energy;
-  std::vector<PenetrationMemo> memos;
-};
-
 struct PairContext {
   const scene::Reconfigurable& scene;
   const PartShape& a;
@@ -36,13 +28,12 @@ struct PairContext {
   const PairEnergyRequest& request;
 };
 
-EnergySample sample_at(const PairContext& ctx, double t, std::span<const PenetrationMemo* const> neighbours,
-                       PenetrationMemo& memo) {
+EnergySample sample_at(const PairContext& ctx, double t) {
   const PairEnergyRequest& r = ctx.request;
   const Eigen::Isometry3d place_a = placement(ctx.scene, r.transition, r.part_a, t);
   const Eigen::Isometry3d place_b = placement(ctx.scene, r.transition, r.part_b, t);
   const IntersectionContour contour = intersection_contour(ctx.a, place_a, ctx.b, place_b, ContourPolylines::kNone);
-  const Penetration depth = penetration(ctx.a, place_a, ctx.b, place_b, neighbours, &memo);
+  const Penetration depth = penetration(ctx.a, place_a, ctx.b, place_b);
   EnergySample sample;
   sample.time = t;
   sample.contour_length = contour.length;
@@ -62,36 +53,22 @@ EnergySample sample_at(const PairContext& ctx, double t, std::span<const Penetra
 }
 
 /// n + 1 uniform samples over [t0, t1], in parallel (each is independent; the shapes are built).
-Samples uniform_samples(const PairContext& ctx, double t0, double t1, int n) {
-  Samples samples;
-  samples.energy.resize(n + 1);
-  samples.memos.resize(n + 1);
-  tbb::parallel_for(0, n + 1, [&](int i) {
-    samples.energy[i] = sample_at(ctx, t0 + (t1 - t0) * i / n, {}, samples.memos[i]);
-  });
+std::vector<EnergySample> uniform_samples(const PairContext& ctx, double t0, double t1, int n) {
+  std::vector<EnergySample> samples(n + 1);
+  tbb::parallel_for(0, n + 1, [&](int i) { samples[i] = sample_at(ctx, t0 + (t1 - t0) * i / n); });
   return samples;
 }
 
-/// Adds the midpoint of every pair of consecutive samples, in parallel; each starts from its
-/// two neighbours' memos, which only saves work: the result does not depend on them.
-void add_midpoints(const PairContext& ctx, double t0, double t1, Samples& samples) {
-  const int n = static_cast<int>(samples.energy.size()) - 1;
-  Samples added;
-  added.energy.resize(n);
-  added.memos.resize(n);
-  tbb::parallel_for(0, n, [&](int i) {
-    const std::array<const PenetrationMemo*, 2> neighbours = {&samples.memos[i], &samples.memos[i + 1]};
-    added.energy[i] = sample_at(ctx, t0 + (t1 - t0) * (2 * i + 1) / (2.0 * n), neighbours, added.memos[i]);
-  });
-  Samples merged;
-  merged.energy.reserve(2 * n + 1);
-  merged.memos.reserve(2 * n + 1);
+/// Adds the midpoint of every pair of consecutive samples, in parallel.
+void add_midpoints(const PairContext& ctx, double t0, double t1, std::vector<EnergySample>& samples) {
+  const int n = static_cast<int>(samples.size()) - 1;
+  std::vector<EnergySample> added(n);
+  tbb::parallel_for(0, n, [&](int i) { added[i] = sample_at(ctx, t0 + (t1 - t0) * (2 * i + 1) / (2.0 * n)); });
+  std::vector<EnergySample> merged;
+  merged.reserve(2 * n + 1);
   for (int i = 0; i <= n; ++i) {
-    merged.energy.push_back(samples.energy[i]);
-    merged.memos.push_back(std::move(samples.memos[i]));
-    if (i == n) break;
-    merged.energy.push_back(added.energy[i]);
-    merged.memos.push_back(std::move(added.memos[i]));
+    merged.push_back(samples[i]);
+    if (i < n) merged.push_back(added[i]);
   }
   samples = std::move(merged);
 }
@@ -129,15 +106,10 @@ PairEnergy pair_energy(const scene::Reconfigurable& scene, ShapeCache& shapes, c
   const PairContext ctx{scene, shapes.shape(scene, request.part_a), shapes.shape(scene, request.part_b), request};
   const double t0 = request.t0, t1 = std::max(request.t0, request.t1);
   const int min_intervals = std::max(1, request.min_intervals);
-  // The first samples in two passes, so that half of them start from their neighbours.
-  int n = min_intervals % 2 == 0 ? min_intervals / 2 : min_intervals;
-  Samples samples = uniform_samples(ctx, t0, t1, n);
-  if (n < min_intervals) {
-    add_midpoints(ctx, t0, t1, samples);
-    n *= 2;
-  }
-  set_trapezoid_weights(samples.energy, t0, t1);
-  double energy = integral(samples.energy);
+  int n = min_intervals;
+  std::vector<EnergySample> samples = uniform_samples(ctx, t0, t1, n);
+  set_trapezoid_weights(samples, t0, t1);
+  double energy = integral(samples);
   // Double the samples until the integral settles: a doubling changes it by less than the
   // accuracy right after one that changed it by less than four times that (a first agreement
   // may be luck while a short collision falls between the samples: the doubling before it
@@ -146,8 +118,8 @@ PairEnergy pair_energy(const scene::Reconfigurable& scene, ShapeCache& shapes, c
   while (n < request.max_intervals && t1 > t0) {
     add_midpoints(ctx, t0, t1, samples);
     n *= 2;
-    set_trapezoid_weights(samples.energy, t0, t1);
-    const double refined = integral(samples.energy);
+    set_trapezoid_weights(samples, t0, t1);
+    const double refined = integral(samples);
     const double change = refined > 0 ? std::abs(refined - energy) / refined : std::numeric_limits<double>::infinity();
     energy = refined;
     if (refined == 0 && n >= 2 * min_intervals) break;
@@ -156,13 +128,13 @@ PairEnergy pair_energy(const scene::Reconfigurable& scene, ShapeCache& shapes, c
   }
   PairEnergy result;
   result.energy = energy;
-  for (const EnergySample& s : samples.energy) {
+  for (const EnergySample& s : samples) {
     result.contour_energy += s.weight * s.contour_length;
     result.penetration_energy += s.weight * s.penetration;
     result.proximity_energy += s.weight * s.proximity;
   }
-  result.severity_time = severity_time(samples.energy, t0, t1);
-  result.samples = std::move(samples.energy);
+  result.severity_time = severity_time(samples, t0, t1);
+  result.samples = std::move(samples);
   return result;
 }
 
