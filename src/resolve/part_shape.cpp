@@ -37,6 +37,18 @@ std::vector<std::array<int, 3>> face_neighbors(const geometry::Mesh& mesh) {
   return neighbors;
 }
 
+/// Whether the faces across every edge (`neighbors`, all ≥ 0) run it in the opposite direction.
+bool consistently_oriented(const geometry::Mesh& mesh, const std::vector<std::array<int, 3>>& neighbors) {
+  for (int f = 0; f < mesh.face_count(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int g = neighbors[f][k], u = mesh.F(f, k), v = mesh.F(f, (k + 1) % 3);
+      bool opposite = false;
+      for (int l = 0; l < 3; ++l) opposite = opposite || (mesh.F(g, l) == v && mesh.F(g, (l + 1) % 3) == u);
+      if (!opposite) return false;
+    }
+  return true;
+}
+
 }  // namespace
 
 PartShape::PartShape(const geometry::Mesh& mesh, int max_samples) : distance(mesh), bounds(distance.tree().bounds()) {
@@ -53,14 +65,11 @@ PartShape::PartShape(const geometry::Mesh& mesh, int max_samples) : distance(mes
   }
   neighbors = face_neighbors(mesh);
   // From the tree's own copy of the corners: the very doubles the contour's exact tests get.
-  const Eigen::MatrixX3d& V = tree().vertices();
-  const Eigen::MatrixX3i& F = tree().faces();
-  planes.reserve(F.rows());
-  for (const int f : tree().leaf_order())
-    planes.push_back(
-        geometry::certain_plane(V.row(F(f, 0)).transpose(), V.row(F(f, 1)).transpose(), V.row(F(f, 2)).transpose()));
+  planes.reserve(tree().leaf_corners().size());
+  for (const geometry::TriangleCorners& t : tree().leaf_corners()) planes.push_back(geometry::certain_plane(t[0], t[1], t[2]));
   closed = std::all_of(neighbors.begin(), neighbors.end(),
                        [](const std::array<int, 3>& across) { return across[0] >= 0 && across[1] >= 0 && across[2] >= 0; });
+  oriented = closed && consistently_oriented(mesh, neighbors);
   const double total = std::accumulate(sample_weights.begin(), sample_weights.end(), 0.0);
   if (total > 0)
     for (double& w : sample_weights) w /= total;

@@ -1,25 +1,25 @@
 #include "reconfig/resolve/penetration.h"
 
-#include <algorithm>
 #include <cmath>
 #include <limits>
 
-#include "reconfig/geometry/ray_parity.h"
+#include "reconfig/geometry/ray_winding.h"
 
 namespace reconfig::resolve {
 namespace {
 
-/// Whether q (in the outer part's frame, inside its box) is settled as outside the closed
-/// outer part by a ray's parity, with no distance query.
+/// Whether q (in the outer part's frame, inside its box) is settled as outside the closed,
+/// consistently oriented outer part by a ray's winding count, with no distance query.
 bool outside_by_ray(const PartShape& outer, const Eigen::Vector3d& q, Penetration& result) {
-  if (!outer.closed) return false;
+  if (!outer.oriented) return false;
   ++result.ray_tests;
-  return geometry::axis_ray_parity(outer.tree(), q) == geometry::RayParity::kEven;
+  const geometry::RayWinding ray = geometry::axis_ray_winding(outer.tree(), q);
+  return ray.certain && ray.winding == 0;
 }
 
-/// The signed distance of q to the outer part, searched no farther than `reach` (≥ the
-/// distance, +inf: unbounded): a bounded search finds the same nearest point as an unbounded
-/// one (the margin covers the rounding of the bound).
+/// The signed distance of q to the outer part, searched first no farther than `reach` (an
+/// upper bound on the distance; +inf: unbounded): a bounded search finds the unbounded one's
+/// nearest point or nothing, and then the unbounded search runs. The bound only saves work.
 geometry::MeshSignedDistance::Query distance_within(const PartShape& outer, const Eigen::Vector3d& q, double reach) {
   geometry::MeshSignedDistance::Query d;
   const double rounding = 1e-9 * (1 + q.cwiseAbs().maxCoeff());

@@ -150,6 +150,10 @@ TEST(TriangleBvh, PlacedPairsCarryTheirCornersAndLeafPositions) {
     });
     // The same pairs in the same order as the plain placed query.
     EXPECT_EQ(placed, plain) << trial;
+    // The tree's leaf-ordered corners are f's corners in F's order.
+    for (std::size_t k = 0; k < ta.leaf_order().size(); ++k)
+      for (int c = 0; c < 3; ++c)
+        ASSERT_EQ(ta.leaf_corners()[k][c], Vector3d(a.V.row(a.F(ta.leaf_order()[k], c)).transpose()));
     found_total += placed.size();
   }
   EXPECT_GT(found_total, 100u);  // the test is not vacuous

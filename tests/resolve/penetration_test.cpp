@@ -2,9 +2,6 @@
 
 #include <gtest/gtest.h>
 
-#include <array>
-
-
 #include "reconfig/geometry/point_in_solid.h"
 #include "placements.h"
 #include "reconfig/geometry/primitives.h"
@@ -67,7 +64,6 @@ TEST(Penetration, RaysSettleSamplesOutsideAClosedPartWithoutADistanceQuery) {
     const Eigen::Isometry3d pa = place(0.6 * random.vector().normalized(), random.rotation());
     const Eigen::Isometry3d pb = random.near_origin(0.02);
     const Penetration p = penetration(a, pa, b, pb);
-    ASSERT_EQ(p.samples_inside > 0, p.depth > 0);
     EXPECT_NEAR(p.depth, reference_depth(a, pa, mb, pb) + reference_depth(b, pb, ma, pa), 1e-12) << trial;
     rays += p.ray_tests;
     queries += p.distance_queries;
@@ -75,7 +71,44 @@ TEST(Penetration, RaysSettleSamplesOutsideAClosedPartWithoutADistanceQuery) {
   }
   EXPECT_GT(inside, 100);          // overlapping poses are exercised
   EXPECT_GT(rays, queries + 500);  // and most samples in the box are settled by a ray
-  EXPECT_GE(queries, inside);      // every inside sample has its distance
+}
+
+TEST(Penetration, PartsOfOverlappingOrNestedShellsHaveTheirWindingNumbersDepth) {
+  // One part made of two shells (as a merged file gives): a sphere holding a smaller one, and
+  // a sphere overlapping a box. Where shells nest or overlap the winding number is 2, inside.
+  const auto merged = [](const geometry::Mesh& x, const geometry::Mesh& y) {
+    geometry::Mesh m;
+    m.V.resize(x.vertex_count() + y.vertex_count(), 3);
+    m.V << x.V, y.V;
+    m.F.resize(x.face_count() + y.face_count(), 3);
+    m.F << x.F, (y.F.array() + x.vertex_count()).matrix();
+    return m;
+  };
+  const geometry::Mesh nested = merged(geometry::make_sphere(0.5, 3), geometry::make_sphere(0.25, 2));
+  geometry::Mesh box = geometry::make_box({0.6, 0.6, 0.6});
+  box.V.rowwise() += Eigen::RowVector3d(0.3, 0.1, 0);
+  const geometry::Mesh overlapping = merged(geometry::make_sphere(0.5, 3), box);
+  const geometry::Mesh small = geometry::make_box({0.1, 0.1, 0.1});
+  const PartShape s(small);
+  for (const geometry::Mesh& outer : {nested, overlapping}) {
+    const PartShape o(outer);
+    ASSERT_TRUE(o.oriented);
+    const Penetration p = penetration(s, place({0.12, 0.04, 0.02}), o, place({0, 0, 0}));
+    EXPECT_EQ(p.samples_inside, 8);  // every corner of the small box, inside both shells
+    EXPECT_NEAR(p.depth, reference_depth(s, place({0.12, 0.04, 0.02}), outer, place({0, 0, 0})), 1e-12);
+  }
+}
+
+TEST(Penetration, InconsistentlyOrientedPartsAreQueriedWithoutRays) {
+  geometry::Mesh flipped = geometry::make_box({1, 1, 1});
+  flipped.F.row(0) = Eigen::RowVector3i(flipped.F(0, 0), flipped.F(0, 2), flipped.F(0, 1));  // one face turned
+  const PartShape b(flipped);
+  ASSERT_TRUE(b.closed);
+  ASSERT_FALSE(b.oriented);
+  const Penetration p = penetration(b, place({0, 0, 0}), b, place({0.3, 0.1, 0.2}));
+  EXPECT_EQ(p.ray_tests, 0);
+  EXPECT_GT(p.distance_queries, 0);
+  EXPECT_GT(p.samples_inside, 0);
 }
 
 TEST(Penetration, OpenMeshesAreQueriedWithoutRays) {

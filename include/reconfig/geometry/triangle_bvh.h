@@ -76,6 +76,9 @@ class TriangleBvh {
   /// The triangles in the order the leaves hold them (a permutation of 0..#F−1): data kept per
   /// triangle in this order is read with few cache misses by pair queries (`PlacedPair`).
   const std::vector<int>& leaf_order() const { return order_; }
+  /// The corners of triangle leaf_order()[k], by k: the very doubles the pair and box queries
+  /// hand to their callers.
+  const std::vector<TriangleCorners>& leaf_corners() const { return ordered_corners_; }
 
   const Eigen::MatrixX3d& vertices() const { return V_; }
   const Eigen::MatrixX3i& faces() const { return F_; }

@@ -33,9 +33,11 @@ struct PartShape {
   /// planes[k]: the plane of face tree().leaf_order()[k] in the rest frame, for the contour's
   /// side filter (in leaf order: a pair query reads the planes of a leaf together).
   std::vector<geometry::CertainPlane> planes;
-  /// Every edge has exactly two faces (no −1 in `neighbors`): the signed distance's sign is
-  /// exact and Lipschitz.
+  /// Every edge has exactly two faces (no −1 in `neighbors`).
   bool closed = false;
+  /// Closed, and the two faces of every edge run it in opposite directions: a ray's winding
+  /// count (`geometry/ray_winding.h`) is the winding number, 0 exactly outside the solid.
+  bool oriented = false;
 
   const geometry::TriangleBvh& tree() const { return distance.tree(); }
 };

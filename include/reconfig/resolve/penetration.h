@@ -17,8 +17,8 @@ struct Penetration {
   /// everywhere gives D; lifting a box out of a face-on overlap lowers P steadily.
   double depth = 0;
   int samples_inside = 0;  ///< of both parts
-  /// Samples in the other part's box tested by a ray's parity (`geometry/ray_parity.h`): those
-  /// against a closed part.
+  /// Samples in the other part's box whose winding number a ray counted
+  /// (`geometry/ray_winding.h`): those against a closed, consistently oriented part.
   int ray_tests = 0;
   int distance_queries = 0;  ///< signed-distance queries made: samples inside, or not settled by a ray
   /// ∂P/∂(rigid motion of a), b held still (depth_s moves by −∇d·u(y) at a sample y of a, by
@@ -27,10 +27,11 @@ struct Penetration {
 };
 
 /// The penetration term of part a placed by `place_a` and part b by `place_b`. Only samples
-/// inside the other part's box are classified: against a closed part, first by the parity of a
-/// ray's crossings (exact where it answers, and far cheaper than a nearest point for samples
-/// far outside the surface); the rest, and every sample against an open part, by the part's
-/// signed distance (exact sign on closed meshes), which also gives an inside sample's depth.
+/// inside the other part's box are classified: against a closed, consistently oriented part, a
+/// ray's winding count settles the samples outside it (winding number 0, exact where the count
+/// is certain, and far cheaper than a nearest point for samples far from the surface); the
+/// others get the part's signed distance (its sign: the pseudonormal's at the nearest point),
+/// which also gives an inside sample's depth.
 Penetration penetration(const PartShape& a, const Eigen::Isometry3d& place_a, const PartShape& b,
                         const Eigen::Isometry3d& place_b);
 

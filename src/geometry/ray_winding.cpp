@@ -1,7 +1,8 @@
-#include "reconfig/geometry/ray_parity.h"
+#include "reconfig/geometry/ray_winding.h"
 
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "reconfig/geometry/certain_plane.h"
 
@@ -36,8 +37,9 @@ AxisRay shortest_exit(const Eigen::AlignedBox3d& box, const Eigen::Vector3d& q) 
   return best;
 }
 
-/// Whether the ray crosses the triangle: +1 it does, 0 it does not, −1 undecided.
-int crossing(const TriangleCorners& t, const Eigen::Vector3d& q, const AxisRay& ray) {
+/// What the triangle adds to the ray's winding count: ±1 where the ray crosses it (+1 where its
+/// normal points along the ray), 0 where it does not; nothing where that cannot be decided.
+std::optional<int> crossing(const TriangleCorners& t, const Eigen::Vector3d& q, const AxisRay& ray) {
   const int i = (ray.axis + 1) % 3, j = (ray.axis + 2) % 3;
   int sign = 0;
   bool unsure = false;
@@ -51,14 +53,14 @@ int crossing(const TriangleCorners& t, const Eigen::Vector3d& q, const AxisRay& 
       return 0;  // q's projection lies strictly outside one edge: the ray's line misses it
     }
   }
-  if (unsure) return -1;  // on an edge's or a corner's projection, or too close to tell
+  if (unsure) return std::nullopt;  // on an edge's or a corner's projection, or too close to tell
   // q's projection lies strictly inside the triangle's, whose orientation in (i, j) is the
   // sign of the normal's component n_axis. The line meets the plane at q + s·direction·e_axis
   // with s = −n·(q − t0) / (direction·n_axis): ahead of q when n·(q − t0) has the sign of
-  // −direction·n_axis.
+  // −direction·n_axis. The normal points along the ray when direction·n_axis > 0.
   const int side = certain_side(certain_plane(t[0], t[1], t[2]), q);
-  if (side == 0) return -1;  // q on the plane, or too close to tell
-  return side == -ray.direction * sign ? 1 : 0;
+  if (side == 0) return std::nullopt;  // q on the plane, or too close to tell
+  return side == -ray.direction * sign ? ray.direction * sign : 0;
 }
 
 }  // namespace
@@ -73,9 +75,9 @@ int certain_orientation_2d(const Eigen::Vector3d& a, const Eigen::Vector3d& b, c
   return det > 0 ? 1 : -1;
 }
 
-RayParity axis_ray_parity(const TriangleBvh& tree, const Eigen::Vector3d& q) {
+RayWinding axis_ray_winding(const TriangleBvh& tree, const Eigen::Vector3d& q) {
   const Eigen::AlignedBox3d& bounds = tree.bounds();
-  if (!bounds.contains(q)) return RayParity::kEven;
+  if (!bounds.contains(q)) return {true, 0};
   const AxisRay ray = shortest_exit(bounds, q);
   Eigen::AlignedBox3d path(q, q);  // the ray up to (and past) the box's side
   if (ray.direction > 0) {
@@ -83,16 +85,17 @@ RayParity axis_ray_parity(const TriangleBvh& tree, const Eigen::Vector3d& q) {
   } else {
     path.min()[ray.axis] = -std::numeric_limits<double>::infinity();
   }
-  int crossings = 0;
-  bool unsure = false;
+  RayWinding result{true, 0};
   tree.for_each_overlapping(path, [&](int, const TriangleCorners& t) {
-    if (unsure) return;
-    const int c = crossing(t, q, ray);
-    if (c < 0) unsure = true;
-    crossings += c > 0 ? 1 : 0;
+    if (!result.certain) return;
+    const std::optional<int> c = crossing(t, q, ray);
+    if (c) {
+      result.winding += *c;
+    } else {
+      result.certain = false;
+    }
   });
-  if (unsure) return RayParity::kUnsure;
-  return crossings % 2 == 0 ? RayParity::kEven : RayParity::kOdd;
+  return result;
 }
 
 }  // namespace reconfig::geometry
