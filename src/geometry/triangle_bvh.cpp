@@ -101,12 +101,8 @@ TriangleBvh::TriangleBvh(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F) :
 
 const Eigen::AlignedBox3d& TriangleBvh::bounds() const { return nodes_.front().box; }
 
-void TriangleBvh::for_each_overlapping(const Eigen::AlignedBox3d& box, const std::function<void(int f)>& visit) const {
-  for_each_overlapping(box, [&](int f, const TriangleCorners&) { visit(f); });
-}
-
-void TriangleBvh::for_each_overlapping(const Eigen::AlignedBox3d& box,
-                                       const std::function<void(int f, const TriangleCorners& corners)>& visit) const {
+template <class Visit>
+void TriangleBvh::visit_overlapping(const Eigen::AlignedBox3d& box, const Visit& visit) const {
   if (nodes_.front().begin == nodes_.front().end) return;
   // Depth-first with a fixed stack: a median-split tree over n < 2^31 triangles is at most
   // 31 levels deep, and the stack holds at most one pending sibling per level.
@@ -117,14 +113,23 @@ void TriangleBvh::for_each_overlapping(const Eigen::AlignedBox3d& box,
     const Node& node = nodes_[stack[--top]];
     if (!node.box.intersects(box)) continue;
     if (node.left < 0) {
-      for (int i = node.begin; i < node.end; ++i) {
-        if (ordered_boxes_[i].intersects(box)) visit(order_[i], ordered_corners_[i]);
+      for (int k = node.begin; k < node.end; ++k) {
+        if (ordered_boxes_[k].intersects(box)) visit(k);
       }
     } else {
       stack[top++] = node.right;
       stack[top++] = node.left;
     }
   }
+}
+
+void TriangleBvh::for_each_overlapping(const Eigen::AlignedBox3d& box, const std::function<void(int f)>& visit) const {
+  visit_overlapping(box, [&](int k) { visit(order_[k]); });
+}
+
+void TriangleBvh::for_each_overlapping(const Eigen::AlignedBox3d& box,
+                                       const std::function<void(int f, const TriangleCorners& corners)>& visit) const {
+  visit_overlapping(box, [&](int k) { visit(order_[k], ordered_corners_[k]); });
 }
 
 template <class OtherLeafBoxes, class Visit>

@@ -89,6 +89,11 @@ class TriangleBvh {
     int left = -1, right = -1;  ///< children, or -1 for a leaf
     int begin = 0, end = 0;     ///< leaf: range in order_
   };
+  /// The box query: `visit(k)` for the position k in `order_` of every triangle whose box
+  /// overlaps `box`.
+  template <class Visit>
+  void visit_overlapping(const Eigen::AlignedBox3d& box, const Visit& visit) const;
+
   /// The pair traversal of every pair query: `other_node_box(node)` gives the box of a node of
   /// `other` in this tree's frame, `other_leaf_boxes(node)` the boxes of its triangles there (a
   /// pointer to node.end − node.begin boxes, in `other.order_`'s order, valid until the
