@@ -1,6 +1,7 @@
 #pragma once
 /// @file
-/// Helpers shared by the mesh I/O, check and mass-property tests.
+/// Helpers shared by the mesh I/O, check and mass-property tests, and those that build a mesh
+/// from others.
 
 #include <Eigen/Core>
 #include <algorithm>
@@ -44,6 +45,16 @@ inline Mesh canonical(const Mesh& mesh) {
   for (std::size_t f = 0; f < faces.size(); ++f)
     for (int k = 0; k < 3; ++k) out.F(static_cast<Eigen::Index>(f), k) = faces[f][static_cast<std::size_t>(k)];
   return out;
+}
+
+/// `a` and `b` in one mesh (b's vertices and faces after a's).
+inline Mesh merge(const Mesh& a, const Mesh& b) {
+  Mesh m;
+  m.V.resize(a.vertex_count() + b.vertex_count(), 3);
+  m.V << a.V, b.V;
+  m.F.resize(a.face_count() + b.face_count(), 3);
+  m.F << a.F, (b.F.array() + a.vertex_count()).matrix();
+  return m;
 }
 
 /// `mesh` with every coordinate rounded to the nearest float (what STL and Assimp keep).

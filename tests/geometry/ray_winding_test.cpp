@@ -8,6 +8,7 @@
 #include <cmath>
 #include <random>
 
+#include "mesh_test_helpers.h"
 #include "reconfig/geometry/point_in_solid.h"
 #include "reconfig/geometry/primitives.h"
 
@@ -70,16 +71,6 @@ Mesh moved(Mesh mesh, const Eigen::Isometry3d& place) {
   return mesh;
 }
 
-/// Two meshes as one (the second's vertices renumbered after the first's).
-Mesh merged(const Mesh& a, const Mesh& b) {
-  Mesh m;
-  m.V.resize(a.vertex_count() + b.vertex_count(), 3);
-  m.V << a.V, b.V;
-  m.F.resize(a.face_count() + b.face_count(), 3);
-  m.F << a.F, (b.F.array() + a.vertex_count()).matrix();
-  return m;
-}
-
 /// Closed, consistently oriented meshes with their shells overlapping or nested in some trials
 /// (winding number 2 there), rotated and moved at random.
 Mesh random_closed_mesh(std::mt19937& rng, int trial) {
@@ -93,8 +84,8 @@ Mesh random_closed_mesh(std::mt19937& rng, int trial) {
     case 0: return moved(make_box({1, 0.4, 0.7}), place);
     case 1: return moved(make_cylinder(0.4, 1, 12), place);
     case 2: return moved(lumpy_sphere(rng), place);
-    case 3: return moved(merged(make_sphere(0.5, 3), moved(make_box({0.6, 0.6, 0.6}), aside)), place);  // overlapping
-    default: return moved(merged(make_sphere(0.5, 3), make_sphere(0.25, 2)), place);  // nested
+    case 3: return moved(testing::merge(make_sphere(0.5, 3), moved(make_box({0.6, 0.6, 0.6}), aside)), place);  // overlapping
+    default: return moved(testing::merge(make_sphere(0.5, 3), make_sphere(0.25, 2)), place);  // nested
   }
 }
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "exact_kernels_test_util.h"
+#include "mesh_test_helpers.h"
 #include "reconfig/common/input_error.h"
 #include "reconfig/geometry/triangle_bvh.h"
 #include "reconfig/geometry/triangle_intersection.h"
@@ -17,6 +18,7 @@ namespace reconfig::geometry {
 namespace {
 
 using Eigen::Vector3d;
+using testing::merge;
 using Pairs = std::vector<std::pair<int, int>>;
 
 Vector3d corner(const Mesh& mesh, int f, int c) { return mesh.V.row(mesh.F(f, c)).transpose(); }
@@ -38,7 +40,7 @@ bool reference_improper(const Mesh& mesh, int f, int g) {
   if (shared.empty()) return true;
   const Vector3d u = mesh.V.row(shared.front()).transpose(), v = mesh.V.row(shared.back()).transpose();
   return std::any_of(contact.points.begin(), contact.points.end(),
-                     [&](const Vector3d& p) { return testing::distance_to_segment(p, u, v) > 1e-9; });
+                     [&](const Vector3d& p) { return reconfig::testing::distance_to_segment(p, u, v) > 1e-9; });
 }
 
 Pairs brute_force(const Mesh& mesh) {
@@ -47,16 +49,6 @@ Pairs brute_force(const Mesh& mesh) {
     for (int g = f + 1; g < mesh.face_count(); ++g)
       if (reference_improper(mesh, f, g)) pairs.emplace_back(f, g);
   return pairs;
-}
-
-/// `a` and `b` in one mesh (b's faces after a's).
-Mesh merge(const Mesh& a, const Mesh& b) {
-  Mesh m;
-  m.V.resize(a.vertex_count() + b.vertex_count(), 3);
-  m.V << a.V, b.V;
-  m.F.resize(a.face_count() + b.face_count(), 3);
-  m.F << a.F, (b.F.array() + a.vertex_count()).matrix();
-  return m;
 }
 
 Mesh transformed(const Mesh& mesh, const Eigen::Matrix3d& R, const Vector3d& t) {
@@ -138,7 +130,7 @@ TEST(SelfIntersections, FoldedAdjacentFaces) {
 
 TEST(SelfIntersections, CleanClosedMeshesHaveNone) {
   for (const char* name : {"cube.off", "elephant.off"}) {
-    const Mesh mesh = testing::cgal_off(name);
+    const Mesh mesh = reconfig::testing::cgal_off(name);
     const SelfIntersections found = find_self_intersections(mesh);
     EXPECT_TRUE(found.pairs.empty()) << name << ": " << found.pairs.size() << " pairs";
     EXPECT_FALSE(found.truncated);
@@ -147,7 +139,7 @@ TEST(SelfIntersections, CleanClosedMeshesHaveNone) {
 }
 
 TEST(SelfIntersections, InterpenetratingCopiesOfCube) {
-  const Mesh cube = testing::cgal_off("cube.off");
+  const Mesh cube = reconfig::testing::cgal_off("cube.off");
   const Eigen::Matrix3d R = Eigen::AngleAxisd(0.4, Vector3d(1, 2, 3).normalized()).toRotationMatrix();
   for (const Mesh& other : {transformed(cube, Eigen::Matrix3d::Identity(), Vector3d(0.5, 0.5, 0.5)),
                             transformed(cube, R, Vector3d(0.3, -0.2, 0.1)),
@@ -169,7 +161,7 @@ TEST(SelfIntersections, InterpenetratingCopiesOfCube) {
 TEST(SelfIntersections, InterpenetratingCopiesOfElephant) {
   // Two posed copies of a clean mesh: the improper pairs are exactly the intersecting pairs
   // across the copies, found here independently with two trees and a dual traversal.
-  const Mesh elephant = testing::cgal_off("elephant.off");
+  const Mesh elephant = reconfig::testing::cgal_off("elephant.off");
   const Eigen::Matrix3d R = Eigen::AngleAxisd(0.7, Vector3d(0, 1, 0)).toRotationMatrix();
   const Mesh other = transformed(elephant, R, Vector3d(0.05, 0.02, 0));
   const Mesh merged = merge(elephant, other);
@@ -210,7 +202,7 @@ TEST(SelfIntersections, InterpenetratingCopiesOfElephant) {
 TEST(SelfIntersections, FaceFoldedThroughAnother) {
   // Pull one corner of the cube through the opposite side: the faces around it pierce
   // faces they do not share a vertex with.
-  Mesh cube = testing::cgal_off("cube.off");
+  Mesh cube = reconfig::testing::cgal_off("cube.off");
   const Vector3d center = cube.V.colwise().mean().transpose();
   const Vector3d v0 = cube.V.row(0).transpose();
   cube.V.row(0) = (center + 1.6 * (center - v0)).transpose();

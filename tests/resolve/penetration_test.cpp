@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include "geometry/mesh_test_helpers.h"
 #include "reconfig/geometry/point_in_solid.h"
 #include "placements.h"
 #include "reconfig/geometry/primitives.h"
@@ -76,18 +77,10 @@ TEST(Penetration, RaysSettleSamplesOutsideAClosedPartWithoutADistanceQuery) {
 TEST(Penetration, PartsOfOverlappingOrNestedShellsHaveTheirWindingNumbersDepth) {
   // One part made of two shells (as a merged file gives): a sphere holding a smaller one, and
   // a sphere overlapping a box. Where shells nest or overlap the winding number is 2, inside.
-  const auto merged = [](const geometry::Mesh& x, const geometry::Mesh& y) {
-    geometry::Mesh m;
-    m.V.resize(x.vertex_count() + y.vertex_count(), 3);
-    m.V << x.V, y.V;
-    m.F.resize(x.face_count() + y.face_count(), 3);
-    m.F << x.F, (y.F.array() + x.vertex_count()).matrix();
-    return m;
-  };
-  const geometry::Mesh nested = merged(geometry::make_sphere(0.5, 3), geometry::make_sphere(0.25, 2));
+  const geometry::Mesh nested = geometry::testing::merge(geometry::make_sphere(0.5, 3), geometry::make_sphere(0.25, 2));
   geometry::Mesh box = geometry::make_box({0.6, 0.6, 0.6});
   box.V.rowwise() += Eigen::RowVector3d(0.3, 0.1, 0);
-  const geometry::Mesh overlapping = merged(geometry::make_sphere(0.5, 3), box);
+  const geometry::Mesh overlapping = geometry::testing::merge(geometry::make_sphere(0.5, 3), box);
   const geometry::Mesh small = geometry::make_box({0.1, 0.1, 0.1});
   const PartShape s(small);
   for (const geometry::Mesh& outer : {nested, overlapping}) {
@@ -99,27 +92,22 @@ TEST(Penetration, PartsOfOverlappingOrNestedShellsHaveTheirWindingNumbersDepth) 
   }
 }
 
-TEST(Penetration, InconsistentlyOrientedPartsAreQueriedWithoutRays) {
-  geometry::Mesh flipped = geometry::make_box({1, 1, 1});
-  flipped.F.row(0) = Eigen::RowVector3i(flipped.F(0, 0), flipped.F(0, 2), flipped.F(0, 1));  // one face turned
-  const PartShape b(flipped);
-  ASSERT_TRUE(b.closed);
-  ASSERT_FALSE(b.oriented);
-  const Penetration p = penetration(b, place({0, 0, 0}), b, place({0.3, 0.1, 0.2}));
-  EXPECT_EQ(p.ray_tests, 0);
-  EXPECT_GT(p.distance_queries, 0);
-  EXPECT_GT(p.samples_inside, 0);
-}
-
-TEST(Penetration, OpenMeshesAreQueriedWithoutRays) {
+TEST(Penetration, OpenOrInconsistentlyOrientedPartsAreQueriedWithoutRays) {
+  // A ray's count means nothing there: one face missing, or one face turned.
   geometry::Mesh open = geometry::make_box({1, 1, 1});
-  open.F.conservativeResize(open.F.rows() - 1, 3);  // one face missing: a ray's parity means nothing
-  const PartShape a(open), b(open);
-  ASSERT_FALSE(b.closed);
-  const Penetration p = penetration(a, place({0.3, 0.1, 0.2}), b, place({0, 0, 0}));
-  EXPECT_EQ(p.ray_tests, 0);
-  EXPECT_GT(p.distance_queries, 0);
-  EXPECT_GT(p.samples_inside, 0);
+  open.F.conservativeResize(open.F.rows() - 1, 3);
+  geometry::Mesh turned = geometry::make_box({1, 1, 1});
+  turned.F.row(0) = Eigen::RowVector3i(turned.F(0, 0), turned.F(0, 2), turned.F(0, 1));
+  for (const geometry::Mesh& mesh : {open, turned}) {
+    const PartShape part(mesh);
+    ASSERT_FALSE(part.oriented);
+    const Penetration p = penetration(part, place({0.3, 0.1, 0.2}), part, place({0, 0, 0}));
+    EXPECT_EQ(p.ray_tests, 0);
+    EXPECT_GT(p.distance_queries, 0);
+    EXPECT_GT(p.samples_inside, 0);
+  }
+  EXPECT_FALSE(PartShape(open).closed);
+  EXPECT_TRUE(PartShape(turned).closed);
 }
 
 TEST(Penetration, GradientMatchesFiniteDifferences) {
