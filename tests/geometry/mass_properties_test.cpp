@@ -10,6 +10,7 @@
 #include "reconfig/common/input_error.h"
 #include "reconfig/geometry/load_mesh.h"
 #include "reconfig/geometry/primitives.h"
+#include "mesh_test_helpers.h"
 #include "support/test_data.h"
 
 namespace reconfig::geometry {
@@ -29,11 +30,7 @@ bool brute_force_inside(const Mesh& mesh, const Eigen::Vector3d& q) {
   return solid_angle / (4 * std::numbers::pi) > 0.5;
 }
 
-Mesh transformed(const Mesh& mesh, const Eigen::Affine3d& T) {
-  Mesh out = mesh;
-  for (int v = 0; v < mesh.vertex_count(); ++v) out.V.row(v) = (T * Eigen::Vector3d(mesh.V.row(v))).transpose();
-  return out;
-}
+using testing::transformed;
 
 TEST(MassProperties, BoxFarFromTheOriginIsExact) {
   const Eigen::Vector3d offset(1e6, -2e6, 3e5);

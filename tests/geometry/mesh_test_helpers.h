@@ -4,6 +4,7 @@
 /// from others.
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <array>
 #include <cstdio>
@@ -44,6 +45,13 @@ inline Mesh canonical(const Mesh& mesh) {
   out.F.resize(static_cast<Eigen::Index>(faces.size()), 3);
   for (std::size_t f = 0; f < faces.size(); ++f)
     for (int k = 0; k < 3; ++k) out.F(static_cast<Eigen::Index>(f), k) = faces[f][static_cast<std::size_t>(k)];
+  return out;
+}
+
+/// `mesh` with every vertex mapped by `T`.
+inline Mesh transformed(const Mesh& mesh, const Eigen::Affine3d& T) {
+  Mesh out = mesh;
+  for (int v = 0; v < mesh.vertex_count(); ++v) out.V.row(v) = (T * Eigen::Vector3d(mesh.V.row(v))).transpose();
   return out;
 }
 

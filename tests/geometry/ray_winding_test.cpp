@@ -66,10 +66,7 @@ Mesh lumpy_sphere(std::mt19937& rng) {
   return mesh;
 }
 
-Mesh moved(Mesh mesh, const Eigen::Isometry3d& place) {
-  for (int v = 0; v < mesh.vertex_count(); ++v) mesh.V.row(v) = (place * Vector3d(mesh.V.row(v).transpose())).transpose();
-  return mesh;
-}
+Mesh moved(const Mesh& mesh, const Eigen::Isometry3d& place) { return testing::transformed(mesh, Eigen::Affine3d(place)); }
 
 /// Closed, consistently oriented meshes with their shells overlapping or nested in some trials
 /// (winding number 2 there), rotated and moved at random.

@@ -52,9 +52,10 @@ Pairs brute_force(const Mesh& mesh) {
 }
 
 Mesh transformed(const Mesh& mesh, const Eigen::Matrix3d& R, const Vector3d& t) {
-  Mesh m = mesh;
-  for (int v = 0; v < m.vertex_count(); ++v) m.V.row(v) = (R * mesh.V.row(v).transpose() + t).transpose();
-  return m;
+  Eigen::Affine3d T = Eigen::Affine3d::Identity();
+  T.linear() = R;
+  T.translation() = t;
+  return testing::transformed(mesh, T);
 }
 
 TEST(SelfIntersections, MatchesReferenceOnRandomGridMeshes) {
